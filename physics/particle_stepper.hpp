@@ -1,0 +1,225 @@
+// Advances one particle through one fixed step, with exact wall handling:
+//  * in flight the chosen method integrates; if the end of the step is outside a wall, the
+//    time of impact is located on the step's own trajectory (the method re-run with a shorter
+//    step, a continuous function of the step length) by a bracketing root search, the
+//    particle is advanced to the wall, the impact response is applied, and the rest of the
+//    step continues from there;
+//  * a particle resting on walls (rebound speed fell below rest_speed while the net force
+//    pressed it on the wall) moves in the wall's plane with the normal force cancelling the
+//    pressing acceleration and Coulomb friction mu N opposing sliding; static friction holds it
+//    when the tangential force is below mu N. Its normal velocity is exactly 0 and its
+//    position exactly on the plane, so it cannot jitter or sink.
+#pragma once
+
+#include "contact.hpp"
+#include "events.hpp"
+#include "integrators.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace pl {
+
+struct StepContext {
+    const RoomBounds* room;
+    const ContactSettings* contact;
+    Method method;
+    double rtol, atol;
+    std::vector<Event>* events;
+    AdaptiveStats* adaptive;
+    std::uint64_t* contact_solves;
+};
+
+struct ParticleStep {
+    FlightState y;           // position, velocity; ledger deltas per kg for drag and wind
+    double radius = 0.0;
+    double step_hint = 0.0;  // dopri5
+    std::uint8_t resting = 0;
+    double bounce_loss = 0.0, friction_loss = 0.0;  // per kg, during this step
+};
+
+template <class F>
+class ParticleStepper {
+public:
+    ParticleStepper(const StepContext& ctx, const F& f) : c_(ctx), f_(f) {}
+
+    void advance(ParticleStep& p, std::uint32_t id, double t0, double h) const {
+        double t = t0, remaining = h;
+        for (int guard = 0; remaining > 0.0; ++guard) {
+            if (guard > 64) {  // pathological: keep the particle in the room and stop this step
+                p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
+                return;
+            }
+            if (p.resting) {
+                if (release_walls(p, id, t)) continue;
+                slide(p, id, t, remaining);
+                return;
+            }
+            const FlightState end = flight(p, t, remaining);
+            int wall = -1;
+            double s_hit = remaining;
+            for (int w = 0; w < wall_count; ++w) {
+                if (c_.room->distance(w, end.x, p.radius) >= 0.0) continue;
+                const double s = time_of_impact(p, w, t, remaining);
+                if (wall < 0 || s < s_hit) { wall = w; s_hit = s; }
+            }
+            if (wall < 0) {
+                p.y = end;
+                return;
+            }
+            ++*c_.contact_solves;
+            if (s_hit > 0.0) p.y = flight(p, t, s_hit);
+            p.y.x[RoomBounds::axis(wall)] = c_.room->contact_plane(wall, p.radius);
+            p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
+            t += s_hit;
+            remaining -= s_hit;
+            hit_wall(p, id, wall, t);
+        }
+    }
+
+private:
+    FlightState flight(ParticleStep& p, double t, double h) const {
+        switch (c_.method) {
+            case Method::explicit_euler: return explicit_euler_step(p.y, t, h, f_);
+            case Method::semi_implicit_euler: return semi_implicit_euler_step(p.y, t, h, f_);
+            case Method::velocity_verlet: return velocity_verlet_step(p.y, t, h, f_);
+            case Method::rk4: return rk4_step(p.y, t, h, f_);
+            case Method::exponential: return exponential_step(p.y, t, h, f_);
+            case Method::dopri5:
+                if (c_.adaptive == nullptr) {
+                    double err = 0.0;
+                    return dopri5_step(p.y, t, h, f_, c_.rtol, c_.atol, err);
+                }
+                return dopri5_adaptive(p.y, t, h, f_, c_.rtol, c_.atol, p.step_hint, *c_.adaptive);
+        }
+        return p.y;
+    }
+
+    // Earliest s in [0, h] at which the sphere touches `wall`, given it is beyond it at s = h.
+    // Bisection while the lower end is on the wall (the root could be at 0 or later), then
+    // Illinois regula falsi (Dahlquist & Bjorck), which converges superlinearly.
+    double time_of_impact(ParticleStep& p, int wall, double t, double h) const {
+        double lo = 0.0, hi = h;
+        double f_lo = c_.room->distance(wall, p.y.x, p.radius);
+        double f_hi = c_.room->distance(wall, flight(p, t, h).x, p.radius);
+        int side = 0;
+        for (int it = 0; it < 80 && hi - lo > 1e-15 * h; ++it) {
+            double s;
+            if (f_lo <= 0.0) {
+                s = 0.5 * (lo + hi);
+            } else {
+                s = lo + (hi - lo) * f_lo / (f_lo - f_hi);
+                if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+            }
+            const double f_s = c_.room->distance(wall, flight(p, t, s).x, p.radius);
+            if (f_s > 0.0) {
+                lo = s;
+                f_lo = f_s;
+                if (side == -1) f_hi *= 0.5;
+                side = -1;
+            } else {
+                hi = s;
+                f_hi = f_s;
+                if (side == 1 && f_lo > 0.0) f_lo *= 0.5;
+                side = 1;
+            }
+            if (f_s == 0.0) break;
+        }
+        return hi;
+    }
+
+    void hit_wall(ParticleStep& p, std::uint32_t id, int wall, double t) const {
+        const Vec3 n = RoomBounds::inward_normal(wall);
+        const double speed_in = glm::length(p.y.v);
+        ImpactResult r = impact(p.y.v, n, *c_.contact);
+        p.bounce_loss += r.bounce_loss_per_kg;
+        p.friction_loss += r.friction_loss_per_kg;
+        p.y.v = r.v_out;
+        EventKind kind = EventKind::bounce;
+        if (r.normal_speed_out < c_.contact->rest_speed && pressed_on(p, n, t)) {
+            // Below the rest threshold the remaining micro-bounces (which would sum to a finite
+            // time, t0 (1+e)/(1-e) for a drop) are replaced by resting contact.
+            p.bounce_loss += 0.5 * r.normal_speed_out * r.normal_speed_out;
+            p.y.v -= glm::dot(p.y.v, n) * n;
+            p.resting |= static_cast<std::uint8_t>(1u << wall);
+            kind = EventKind::rest;
+        }
+        if (r.normal_speed_in > 0.0 || kind == EventKind::rest)
+            c_.events->push_back({t, id, static_cast<std::int8_t>(wall), kind, speed_in, glm::length(p.y.v)});
+    }
+
+    bool pressed_on(const ParticleStep& p, const Vec3& n, double t) const {
+        return glm::dot(f_(p.y.x, p.y.v, t).a, n) < 0.0;
+    }
+
+    // Leaves every resting wall that the particle is kicked or pulled away from; returns true
+    // when it is no longer resting on any wall.
+    bool release_walls(ParticleStep& p, std::uint32_t id, double t) const {
+        const Derivative d = f_(p.y.x, p.y.v, t);
+        for (int w = 0; w < wall_count; ++w) {
+            if (!(p.resting & (1u << w))) continue;
+            const Vec3 n = RoomBounds::inward_normal(w);
+            if (glm::dot(d.a, n) > 0.0 || glm::dot(p.y.v, n) > 0.0) {
+                p.resting &= static_cast<std::uint8_t>(~(1u << w));
+                const double s = glm::length(p.y.v);
+                c_.events->push_back({t, id, static_cast<std::int8_t>(w), EventKind::lift, s, s});
+            }
+        }
+        return p.resting == 0;
+    }
+
+    // Resting contact for the rest of the step (first order, semi-implicit; see file comment).
+    void slide(ParticleStep& p, std::uint32_t id, double t, double h) const {
+        const Derivative d = f_(p.y.x, p.y.v, t);
+        Vec3 a = d.a;
+        double press = 0.0;
+        for (int w = 0; w < wall_count; ++w) {
+            if (!(p.resting & (1u << w))) continue;
+            const Vec3 n = RoomBounds::inward_normal(w);
+            const double an = glm::dot(a, n);
+            press -= an;  // an <= 0 here: release_walls took the others
+            a -= an * n;
+            p.y.v -= glm::dot(p.y.v, n) * n;
+        }
+        const Vec3 v_free = p.y.v + h * a;
+        const double jump = h * c_.contact->friction * press;  // Coulomb: |dv| <= mu N h / m
+        const double speed = glm::length(v_free);
+        const bool was_moving = p.y.v != Vec3(0.0);
+        const Vec3 v_new = speed <= jump ? Vec3(0.0) : v_free * (1.0 - jump / speed);
+        p.friction_loss += 0.5 * (speed * speed - glm::dot(v_new, v_new));
+        p.y.drag_loss += h * d.drag_power;
+        p.y.wind_gain += h * d.wind_power;
+        p.y.v = v_new;
+        if (was_moving && v_new == Vec3(0.0))
+            c_.events->push_back({t + h, id, -1, EventKind::stop, glm::length(v_free), 0.0});
+        if (v_new == Vec3(0.0)) return;
+        // Straight-line motion along the walls: walls it slides into are found exactly.
+        double remaining = h;
+        for (int guard = 0; guard < 16 && remaining > 0.0; ++guard) {
+            const Vec3 end = p.y.x + remaining * p.y.v;
+            int wall = -1;
+            double s_hit = remaining;
+            for (int w = 0; w < wall_count; ++w) {
+                const double d_end = c_.room->distance(w, end, p.radius);
+                if (d_end >= 0.0) continue;
+                const double d0 = std::max(0.0, c_.room->distance(w, p.y.x, p.radius));
+                const double s = remaining * d0 / (d0 - d_end);
+                if (wall < 0 || s < s_hit) { wall = w; s_hit = s; }
+            }
+            if (wall < 0) {
+                p.y.x = end;
+                break;
+            }
+            p.y.x += s_hit * p.y.v;
+            p.y.x[RoomBounds::axis(wall)] = c_.room->contact_plane(wall, p.radius);
+            remaining -= s_hit;
+            hit_wall(p, id, wall, t + h - remaining);
+        }
+        p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
+    }
+
+    const StepContext& c_;
+    const F& f_;
+};
+
+}  // namespace pl

@@ -1,0 +1,1 @@
+#include "preset_io.hpp"

@@ -1,0 +1,156 @@
+// Scene: plain data describing one experiment (what the user set). Presets are this struct
+// serialised; the GUI, CLI, tests and benchmarks all build scenes through it.
+// SI units throughout, y is up.
+#pragma once
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pl {
+
+using Vec3 = glm::dvec3;
+
+// Axis-aligned box room. The seed's cube spans -1..1 at size 2.
+struct Room {
+    Vec3 center{0.0, 0.0, 0.0};
+    Vec3 size{10.0, 6.0, 10.0};
+
+    Vec3 min_corner() const { return center - 0.5 * size; }
+    Vec3 max_corner() const { return center + 0.5 * size; }
+    double floor_y() const { return center.y - 0.5 * size.y; }
+};
+
+struct Air {
+    double density_kg_m3 = 1.225;   // ISA sea level
+    double viscosity_pa_s = 1.81e-5;  // dynamic viscosity at 15 C
+};
+
+enum class WindKind { none, constant, gust, shear, vortex };
+
+// w(x, t). Only the fields of the chosen kind are used.
+struct WindSettings {
+    WindKind kind = WindKind::none;
+    Vec3 velocity{0.0, 0.0, 0.0};  // constant: the wind; gust: the mean; shear: wind at reference_height
+    // gust: w = velocity + amplitude * s(t), s a seeded sum of sinusoids bounded by [-1, 1]
+    Vec3 gust_amplitude{1.0, 0.0, 1.0};
+    double gust_period_s = 3.0;  // dominant period of the variation
+    std::uint64_t gust_seed = 1;
+    // shear (power-law boundary layer): |w| = |velocity| * (height / reference_height)^exponent
+    double reference_height_m = 2.0;
+    double shear_exponent = 1.0 / 7.0;  // Hellmann exponent, open terrain
+    // vortex (Rankine): swirl about an axis through vortex_center; tangential speed rises
+    // linearly to vortex_max_speed at core_radius, then falls off as 1/r.
+    Vec3 vortex_center{0.0, 0.0, 0.0};
+    Vec3 vortex_axis{0.0, 1.0, 0.0};
+    double vortex_max_speed = 3.0;
+    double vortex_core_radius_m = 1.0;
+};
+
+struct World {
+    Vec3 gravity{0.0, -9.81, 0.0};
+    Air air;
+    WindSettings wind;
+};
+
+enum class DragModel { none, linear, quadratic, sphere_re };
+
+struct DragSettings {
+    DragModel model = DragModel::none;
+    double cd = 0.47;  // quadratic: constant drag coefficient (smooth sphere, subcritical)
+    // linear: explicit coefficient b in N s/m; when absent, Stokes b = 6 pi mu R from the air.
+    std::optional<double> linear_b;
+};
+
+struct ContactSettings {
+    double restitution = 0.8;  // e on the normal velocity, 0..1
+    double friction = 0.3;     // Coulomb mu, >= 0
+    double rest_speed = 0.05;  // rebound speed (m/s) below which a particle comes to rest
+};
+
+enum class Method { explicit_euler, semi_implicit_euler, velocity_verlet, rk4, dopri5, exponential };
+
+struct IntegratorSettings {
+    Method method = Method::semi_implicit_euler;
+    double dt = 0.002;   // fixed step, s
+    double rtol = 1e-6;  // dopri5 only
+    double atol = 1e-9;  // dopri5 only
+    bool adaptive = true;  // dopri5: false takes exactly one Dormand-Prince step per dt
+};
+
+struct ParticleSpec {
+    Vec3 position{0.0, 1.0, 0.0};
+    Vec3 velocity{0.0, 0.0, 0.0};
+    double mass = 0.057;     // kg (a tennis ball)
+    double radius = 0.033;   // m
+};
+
+// Creates `count` particles, seeded and reproducible.
+struct Emitter {
+    std::size_t count = 0;
+    std::uint64_t seed = 1;
+    Vec3 region_min{-1.0, 0.0, -1.0};
+    Vec3 region_max{1.0, 1.0, 1.0};
+    double speed_min = 0.0, speed_max = 5.0;
+    // Directions are uniform within `spread_deg` of `direction` (180 = all directions).
+    Vec3 direction{0.0, 1.0, 0.0};
+    double spread_deg = 180.0;
+    double mass_min = 0.057, mass_max = 0.057;
+    double radius_min = 0.033, radius_max = 0.033;
+};
+
+// A variant overrides whole sections of the scene. All variants start from the same particles.
+struct Variant {
+    std::string label;
+    std::optional<DragSettings> drag;
+    std::optional<WindSettings> wind;
+    std::optional<Air> air;
+    std::optional<ContactSettings> contact;
+    std::optional<IntegratorSettings> integrator;
+};
+
+struct Scene {
+    std::string name = "Untitled";
+    std::string description;
+    Room room;
+    World world;
+    DragSettings drag;
+    ContactSettings contact;
+    IntegratorSettings integrator;
+    std::vector<ParticleSpec> particles;
+    std::optional<Emitter> emitter;
+    std::vector<Variant> variants;  // empty: the scene itself is the only variant
+};
+
+// The constant description one simulation runs: a scene with one variant applied.
+struct Model {
+    std::string label;
+    Room room;
+    World world;
+    DragSettings drag;
+    ContactSettings contact;
+    IntegratorSettings integrator;
+};
+
+std::size_t variant_count(const Scene& scene);  // >= 1
+Model model_for_variant(const Scene& scene, std::size_t variant);
+// The explicit particles followed by the emitter's, identical for every variant.
+std::vector<ParticleSpec> initial_particles(const Scene& scene);
+
+const char* to_string(Method m);
+const char* to_string(DragModel d);
+const char* to_string(WindKind w);
+std::optional<Method> method_from_string(const std::string& s);
+std::optional<DragModel> drag_model_from_string(const std::string& s);
+std::optional<WindKind> wind_kind_from_string(const std::string& s);
+
+// Order of accuracy of each method (used for reports and the stability guard).
+int method_order(Method m);
+// Largest stable h*k for linear decay a = -k v; +inf where unconditionally stable.
+double method_stability_limit(Method m);
+
+}  // namespace pl

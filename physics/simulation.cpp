@@ -1,0 +1,220 @@
+#include "simulation.hpp"
+
+#include "drag.hpp"
+#include "energy.hpp"
+#include "particle_stepper.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pl {
+
+namespace {
+
+bool finite(const FlightState& y) {
+    return std::isfinite(y.x.x) && std::isfinite(y.x.y) && std::isfinite(y.x.z) && std::isfinite(y.v.x) &&
+           std::isfinite(y.v.y) && std::isfinite(y.v.z) && std::isfinite(y.drag_loss) && std::isfinite(y.wind_gain);
+}
+
+// The stepping kernel for one combination of enabled force terms.
+template <DragModel Drag, bool HasWind>
+void step_kernel(Simulation& sim) {
+    ParticleState& s = sim.mutable_state();
+    const Model& m = sim.model();
+    const RoomBounds room(m.room);
+    Forces<Drag, HasWind> f;
+    f.gravity = m.world.gravity;
+    f.wind = &sim.wind();
+    AdaptiveStats adaptive;
+    std::uint64_t contact_solves = 0;
+    const bool adaptive_on = m.integrator.method == Method::dopri5 && m.integrator.adaptive;
+    const StepContext ctx{&room,         &m.contact, m.integrator.method, m.integrator.rtol, m.integrator.atol,
+                          &sim.event_sink(), adaptive_on ? &adaptive : nullptr, &contact_solves};
+    const ParticleStepper<Forces<Drag, HasWind>> stepper(ctx, f);
+    std::vector<double>& hints = sim.adaptive_step_hint();
+    const double t0 = sim.time(), h = m.integrator.dt;
+
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (s.frozen[i]) continue;
+        f.drag = {s.drag_k[i], s.drag_re_scale[i]};
+        ParticleStep p;
+        p.y.x = s.position(i);
+        p.y.v = s.velocity(i);
+        p.radius = s.radius[i];
+        p.resting = s.resting[i];
+        if (adaptive_on) p.step_hint = hints[i];
+        stepper.advance(p, static_cast<std::uint32_t>(i), t0, h);
+        if (!finite(p.y)) {
+            // Keep the last finite state and stop stepping this particle.
+            s.frozen[i] = 1;
+            sim.event_sink().push_back(
+                {t0, static_cast<std::uint32_t>(i), -1, EventKind::frozen, glm::length(s.velocity(i)), 0.0});
+            sim.raise(WarningKind::frozen, static_cast<std::uint32_t>(i),
+                      fmt::format("particle {} frozen at t = {:.6g} s: its state became non-finite (NaN/Inf) "
+                                  "during the step; last finite state kept",
+                                  i, t0));
+            continue;
+        }
+        s.set_position(i, p.y.x);
+        s.set_velocity(i, p.y.v);
+        s.resting[i] = p.resting;
+        if (adaptive_on) hints[i] = p.step_hint;
+        const double mass = s.mass[i];
+        s.dissipated_bounce[i] += mass * p.bounce_loss;
+        s.dissipated_friction[i] += mass * p.friction_loss;
+        if constexpr (Drag != DragModel::none) {
+            s.dissipated_drag[i] += mass * p.y.drag_loss;
+            if constexpr (HasWind) s.wind_work[i] += mass * p.y.wind_gain;
+        }
+    }
+    ForceCounters& c = sim.mutable_counters();
+    c.gravity += f.gravity_evals;
+    c.drag += f.drag_evals;
+    c.wind += f.wind_evals;
+    c.accepted_steps += adaptive.accepted;
+    c.rejected_steps += adaptive.rejected;
+    c.contacts += contact_solves;
+}
+
+template <DragModel Drag>
+StepKernel pick_wind(bool has_wind) {
+    return has_wind ? &step_kernel<Drag, true> : &step_kernel<Drag, false>;
+}
+
+StepKernel pick_kernel(const Model& m) {
+    // Wind acts only through drag: without drag the wind field is never consulted.
+    const bool wind = m.world.wind.kind != WindKind::none && m.drag.model != DragModel::none;
+    switch (m.drag.model) {
+        case DragModel::none: return &step_kernel<DragModel::none, false>;
+        case DragModel::linear: return pick_wind<DragModel::linear>(wind);
+        case DragModel::quadratic: return pick_wind<DragModel::quadratic>(wind);
+        case DragModel::sphere_re: return pick_wind<DragModel::sphere_re>(wind);
+    }
+    return &step_kernel<DragModel::none, false>;
+}
+
+}  // namespace
+
+Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
+    : model_(std::move(model)), wind_(model_.world.wind, model_.room) {
+    state_.resize(particles.size());
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const ParticleSpec& p = particles[i];
+        state_.set_position(i, p.position);
+        state_.set_velocity(i, p.velocity);
+        state_.mass[i] = p.mass;
+        state_.radius[i] = p.radius;
+        const DragCoefficients c = drag_coefficients(model_.drag, model_.world.air, p.mass, p.radius);
+        state_.drag_k[i] = c.k;
+        state_.drag_re_scale[i] = c.re_scale;
+        state_.initial_energy[i] = kinetic_energy(p.mass, p.velocity) +
+                                   potential_energy(model_.world.gravity, model_.room, p.mass, p.position);
+    }
+    warned_.assign(particles.size(), 0);
+    if (model_.drag.model != DragModel::none) {
+        re_min_.assign(particles.size(), INFINITY);
+        re_max_.assign(particles.size(), 0.0);
+    }
+    if (model_.integrator.method == Method::dopri5) adaptive_step_hint_.assign(particles.size(), 0.0);
+    kernel_ = pick_kernel(model_);
+    monitor();
+}
+
+void Simulation::step() {
+    kernel_(*this);
+    ++steps_;
+    monitor();
+}
+
+void Simulation::step_n(std::uint64_t n) {
+    for (std::uint64_t k = 0; k < n; ++k) step();
+}
+
+void Simulation::run_until(double t) {
+    const double target = std::round(t / dt() * (1.0 + 1e-12));
+    while (static_cast<double>(steps_) < target) step();
+}
+
+void Simulation::set_velocity(std::size_t i, const Vec3& v) {
+    state_.set_velocity(i, v);
+    // Walls the new velocity points away from no longer hold the particle; walls it points
+    // into keep it resting with the normal component removed on the next step.
+    for (int w = 0; w < wall_count; ++w) {
+        if (!(state_.resting[i] & (1u << w))) continue;
+        if (glm::dot(v, RoomBounds::inward_normal(w)) > 0.0) {
+            state_.resting[i] &= static_cast<std::uint8_t>(~(1u << w));
+            events_.push_back({time(), static_cast<std::uint32_t>(i), static_cast<std::int8_t>(w), EventKind::lift,
+                               glm::length(v), glm::length(v)});
+        }
+    }
+}
+
+Vec3 Simulation::acceleration(std::size_t i) const {
+    Vec3 a = model_.world.gravity;
+    if (model_.drag.model == DragModel::none) return a;
+    const Vec3 u = state_.velocity(i) - wind_.at(state_.position(i), time());
+    const double speed = glm::length(u);
+    const DragCoefficients c{state_.drag_k[i], state_.drag_re_scale[i]};
+    double rate = 0.0;
+    switch (model_.drag.model) {
+        case DragModel::none: break;
+        case DragModel::linear: rate = c.k; break;
+        case DragModel::quadratic: rate = c.k * speed; break;
+        case DragModel::sphere_re: rate = c.k * sphere_cd_times_re(c.re_scale * speed); break;
+    }
+    return a - rate * u;
+}
+
+std::vector<Event> Simulation::drain_events() {
+    std::vector<Event> out;
+    out.swap(events_);
+    return out;
+}
+
+void Simulation::record_reynolds(std::size_t i, double re) {
+    re_min_[i] = std::min(re_min_[i], re);
+    re_max_[i] = std::max(re_max_[i], re);
+}
+
+void Simulation::raise(WarningKind kind, std::uint32_t particle, std::string message) {
+    const auto bit = static_cast<std::uint8_t>(1u << static_cast<unsigned>(kind));
+    if (warned_[particle] & bit) return;
+    warned_[particle] |= bit;
+    warnings_.push_back({kind, particle, time(), std::move(message)});
+}
+
+void Simulation::monitor() {
+    if (model_.drag.model == DragModel::none) return;
+    // Large scenes are sampled every 16 steps: the monitor only reads the state.
+    if (state_.size() > 10000 && steps_ % 16 != 0) return;
+    const ReRange valid = drag_validity(model_.drag.model);
+    const double limit = method_stability_limit(model_.integrator.method);
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        if (state_.frozen[i] || state_.resting[i]) continue;
+        const double u = glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
+        const double re = state_.drag_re_scale[i] * u;
+        if (u > 0.0) record_reynolds(i, re);
+        const auto id = static_cast<std::uint32_t>(i);
+        if (u > 0.0 && (re < valid.lo || re > valid.hi))
+            raise(WarningKind::drag_validity, id,
+                  fmt::format("particle {}: Re = {:.3g} at t = {:.3f} s is outside the {} drag model's "
+                              "validity range {:.3g} < Re < {:.3g}",
+                              i, re, time(), to_string(model_.drag.model), valid.lo, valid.hi));
+        if (u > 0.3 * 343.0)
+            raise(WarningKind::mach, id,
+                  fmt::format("particle {}: Mach {:.2f} at t = {:.3f} s; compressibility is not modelled "
+                              "(results unreliable above Mach 0.3)",
+                              i, u / 343.0, time()));
+        const double k = drag_stiffness(model_.drag.model, {state_.drag_k[i], state_.drag_re_scale[i]}, u);
+        max_stiffness_ = std::max(max_stiffness_, k);
+        if (k * dt() > limit)
+            raise(WarningKind::stability, id,
+                  fmt::format("particle {}: dt * k = {:.3g} exceeds the {} stability limit {:.3g} "
+                              "(drag stiffness k = {:.3g} 1/s); use dt <= {:.3g} s or the exponential method",
+                              i, k * dt(), to_string(model_.integrator.method), limit, k, 0.9 * limit / k));
+    }
+}
+
+}  // namespace pl

@@ -1,0 +1,103 @@
+// Simulation: advances one Model's particles by fixed steps of model.integrator.dt.
+// The force sum is assembled from the model once, at construction: terms the model does not
+// enable (drag, wind) are compiled out of the stepping kernel and never evaluated.
+#pragma once
+
+#include "events.hpp"
+#include "particle_state.hpp"
+#include "scene.hpp"
+#include "wind.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pl {
+
+// How often each force term was evaluated (one count per particle per evaluation).
+struct ForceCounters {
+    std::uint64_t gravity = 0, drag = 0, wind = 0;
+    std::uint64_t rejected_steps = 0;  // dopri5 only
+    std::uint64_t accepted_steps = 0;  // dopri5 internal steps
+    std::uint64_t contacts = 0;        // time-of-impact solves
+};
+
+enum class WarningKind : std::uint8_t {
+    drag_validity,  // Re outside the drag model's validity range
+    stability,      // dt * drag stiffness beyond the method's limit
+    frozen,         // state became non-finite
+    mach,           // relative speed above Mach 0.3: compressibility not modelled
+};
+
+// Raised once per particle and kind; `message` is ready for the UI and CLI.
+struct Warning {
+    WarningKind kind;
+    std::uint32_t particle;
+    double t;
+    std::string message;
+};
+
+class Simulation;
+using StepKernel = void (*)(Simulation&);
+
+class Simulation {
+public:
+    Simulation(Model model, const std::vector<ParticleSpec>& particles);
+
+    void step();  // exactly one fixed step of model().integrator.dt
+    void step_n(std::uint64_t n);
+    // Steps until time() >= t (whole steps only; t is rounded to the step grid).
+    void run_until(double t);
+
+    double time() const { return static_cast<double>(steps_) * model_.integrator.dt; }
+    double dt() const { return model_.integrator.dt; }
+    std::uint64_t step_count() const { return steps_; }
+    const Model& model() const { return model_; }
+    const ParticleState& state() const { return state_; }
+    std::size_t particle_count() const { return state_.size(); }
+    const WindField& wind() const { return wind_; }
+
+    // Sets a particle's velocity (a kick); it leaves any wall it is pushed away from.
+    void set_velocity(std::size_t i, const Vec3& v);
+    // Net acceleration a particle feels at its current state (no contact forces).
+    Vec3 acceleration(std::size_t i) const;
+
+    // Events since the last drain (the simulation appends; consumers take them).
+    const std::vector<Event>& events() const { return events_; }
+    std::vector<Event> drain_events();
+    const std::vector<Warning>& warnings() const { return warnings_; }
+    const ForceCounters& counters() const { return counters_; }
+
+    // Observed Re range per particle (only tracked when drag is on).
+    double min_reynolds(std::size_t i) const { return re_min_.empty() ? 0.0 : re_min_[i]; }
+    double max_reynolds(std::size_t i) const { return re_max_.empty() ? 0.0 : re_max_[i]; }
+    // Largest drag stiffness k (1/s) seen so far, over all particles.
+    double max_drag_stiffness() const { return max_stiffness_; }
+
+    // Kernel plumbing (used by the kernels in simulation_kernels.cpp).
+    ParticleState& mutable_state() { return state_; }
+    std::vector<Event>& event_sink() { return events_; }
+    ForceCounters& mutable_counters() { return counters_; }
+    void record_reynolds(std::size_t i, double re);
+    void raise(WarningKind kind, std::uint32_t particle, std::string message);
+
+private:
+    void monitor();  // NaN guard, validity ranges, stability guard
+
+    Model model_;
+    WindField wind_;
+    ParticleState state_;
+    StepKernel kernel_ = nullptr;
+    std::uint64_t steps_ = 0;
+    std::vector<Event> events_;
+    std::vector<Warning> warnings_;
+    std::vector<std::uint8_t> warned_;  // per particle: bit per WarningKind
+    ForceCounters counters_;
+    std::vector<double> re_min_, re_max_;
+    double max_stiffness_ = 0.0;
+    std::vector<double> adaptive_step_hint_;  // dopri5: last accepted internal step per particle
+public:
+    std::vector<double>& adaptive_step_hint() { return adaptive_step_hint_; }
+};
+
+}  // namespace pl
