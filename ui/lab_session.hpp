@@ -1,0 +1,69 @@
+// LabSession: everything the GUI shows and edits, owned by the app shell and passed to the
+// panels. The panels (ui/) read and edit physics data; they never step physics themselves,
+// except through the session's requests, which the app shell executes between frames.
+#pragma once
+
+#include "physics/experiment.hpp"
+#include "physics/preset_io.hpp"
+#include "physics/scene.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pl::ui {
+
+struct PlotHistory;  // ui/plot_history.hpp: bounded per-series sample buffers
+
+// What the shell measured this frame (shown in the status bar).
+struct FrameStats {
+    double fps = 0.0;
+    double physics_ms = 0.0;       // time spent stepping this frame
+    std::uint64_t substeps = 0;    // base steps run this frame
+    bool behind = false;           // physics could not keep up with real time
+    double real_time_factor = 0.0; // simulated seconds per real second, smoothed
+};
+
+// Requests the panels raise; the shell performs them at a safe point of the frame.
+struct Requests {
+    bool reset = false;
+    bool single_step = false;
+    bool run_to_next_event = false;
+    bool relaunch = false;           // L: launch particle 0 again with launch_velocity
+    bool screenshot = false;
+    std::filesystem::path screenshot_path;
+    bool quit = false;
+};
+
+struct LabSession {
+    Scene scene;                               // what the user edits (the preset)
+    std::unique_ptr<Experiment> experiment;    // running instance built from `scene`
+    std::filesystem::path preset_path;         // file the scene came from / is saved to
+    bool dirty = false;                        // unsaved edits
+    bool paused = false;
+    double time_scale = 1.0;
+    int selected_particle = 0;
+    int selected_variant = 0;
+    Vec3 launch_velocity{3.0, 4.0, 1.0};       // the L key / launch tool
+    std::string error_popup;                   // non-empty: shown in a modal, scene untouched
+    std::string status_message;                // transient one-line message
+    Requests requests;
+    FrameStats frame;
+    std::shared_ptr<PlotHistory> history;      // created by the ui on first use
+
+    // 3D view options (the shell's view toolbar edits them; panels may too).
+    bool show_trails = true;
+    bool show_velocity = false;                // velocity arrows on the particles
+    bool show_wind = false;                    // wind field arrows on a grid
+    bool split_view = false;                   // one viewport per variant (up to 4) instead of overlaid
+    // Popups the shell toggles from keys and window events; draw_popups shows them.
+    bool show_help = false;                    // F1/H toggle, Esc closes
+    bool confirm_quit = false;                 // window closed with unsaved changes: ask, then set requests.quit
+
+    // Replaces the scene and rebuilds the experiment; on failure nothing changes.
+    bool load(const std::filesystem::path& file);
+    void apply_scene(const Scene& s);          // rebuild the experiment from an edited scene
+};
+
+}  // namespace pl::ui
