@@ -136,13 +136,20 @@ private:
         p.friction_loss += r.friction_loss_per_kg;
         p.y.v = r.v_out;
         EventKind kind = EventKind::bounce;
-        if (r.normal_speed_out < c_.contact->rest_speed && pressed_on(p, n, t)) {
+        if (r.normal_speed_out < c_.contact->rest_speed) {
             // Below the rest threshold the remaining micro-bounces (which would sum to a finite
-            // time, t0 (1+e)/(1-e) for a drop) are replaced by resting contact.
-            p.bounce_loss += 0.5 * r.normal_speed_out * r.normal_speed_out;
-            p.y.v -= glm::dot(p.y.v, n) * n;
-            p.resting |= static_cast<std::uint8_t>(1u << wall);
-            kind = EventKind::rest;
+            // time, t0 (1+e)/(1-e) for a drop) are replaced by resting contact when the net force
+            // presses the particle on the wall. Against a wall nothing presses it on, a lossy
+            // wall (e < 1) still ends the slow normal motion, so it cannot creep forever.
+            const bool pressed = pressed_on(p, n, t);
+            if (pressed || c_.contact->restitution < 1.0) {
+                p.bounce_loss += 0.5 * r.normal_speed_out * r.normal_speed_out;
+                p.y.v -= glm::dot(p.y.v, n) * n;
+            }
+            if (pressed) {
+                p.resting |= static_cast<std::uint8_t>(1u << wall);
+                kind = EventKind::rest;
+            }
         }
         if (r.normal_speed_in > 0.0 || kind == EventKind::rest)
             c_.events->push_back({t, id, static_cast<std::int8_t>(wall), kind, speed_in, glm::length(p.y.v)});
@@ -214,6 +221,10 @@ private:
             p.y.x[RoomBounds::axis(wall)] = c_.room->contact_plane(wall, p.radius);
             remaining -= s_hit;
             hit_wall(p, id, wall, t + h - remaining);
+            if (p.y.v == Vec3(0.0)) {
+                c_.events->push_back({t + h - remaining, id, -1, EventKind::stop, 0.0, 0.0});
+                break;
+            }
         }
         p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
     }
