@@ -125,6 +125,12 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
 void Simulation::step() {
     kernel_(*this);
     ++steps_;
+    if (events_.size() > max_pending_events) {
+        // Nobody is draining: keep the newest events, count the rest, stay bounded in memory.
+        const std::size_t drop = events_.size() - max_pending_events / 2;
+        events_.erase(events_.begin(), events_.begin() + static_cast<std::ptrdiff_t>(drop));
+        dropped_events_ += drop;
+    }
     monitor();
 }
 

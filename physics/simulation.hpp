@@ -65,6 +65,9 @@ public:
     // Events since the last drain (the simulation appends; consumers take them).
     const std::vector<Event>& events() const { return events_; }
     std::vector<Event> drain_events();
+    // At most this many undrained events are kept; older ones are dropped and counted.
+    static constexpr std::size_t max_pending_events = 1u << 20;
+    std::uint64_t dropped_events() const { return dropped_events_; }
     const std::vector<Warning>& warnings() const { return warnings_; }
     const ForceCounters& counters() const { return counters_; }
 
@@ -90,6 +93,7 @@ private:
     StepKernel kernel_ = nullptr;
     std::uint64_t steps_ = 0;
     std::vector<Event> events_;
+    std::uint64_t dropped_events_ = 0;
     std::vector<Warning> warnings_;
     std::vector<std::uint8_t> warned_;  // per particle: bit per WarningKind
     ForceCounters counters_;
