@@ -106,11 +106,39 @@ FlightState exponential_step(const FlightState& y, double t, double h, const F& 
     return out;
 }
 
-// One Dormand-Prince 5(4) step (Dormand & Prince, J. Comp. Appl. Math. 6, 1980); returns the
-// 5th-order solution and writes the scaled error norm of the embedded 4th-order difference.
+namespace detail {
+// Flight states form a vector space; the Dormand-Prince stages are combinations of them.
+inline FlightState operator+(const FlightState& a, const FlightState& b) {
+    return {a.x + b.x, a.v + b.v, a.drag_loss + b.drag_loss, a.wind_gain + b.wind_gain};
+}
+inline FlightState operator-(const FlightState& a, const FlightState& b) {
+    return {a.x - b.x, a.v - b.v, a.drag_loss - b.drag_loss, a.wind_gain - b.wind_gain};
+}
+inline FlightState operator*(double s, const FlightState& a) {
+    return {s * a.x, s * a.v, s * a.drag_loss, s * a.wind_gain};
+}
+// d/dt of the flight state at a stage: (v, a, drag power, wind power).
+inline FlightState rate(const Vec3& v, const Derivative& d) { return {v, d.a, d.drag_power, d.wind_power}; }
+}  // namespace detail
+
+// One Dormand-Prince 5(4) step (Dormand & Prince, J. Comp. Appl. Math. 6, 1980) with its error
+// estimate and the 4th-order continuous extension used to locate wall impacts inside the step
+// (Hairer, Norsett & Wanner, Solving ODEs I, II.6, the dense output of DOPRI5).
+struct DopriStep {
+    FlightState y1;
+    double err_norm = 0.0;
+    FlightState r1, r2, r3, r4, r5;  // dense output coefficients
+    // State at y(t + theta h), theta in [0, 1].
+    FlightState at(double theta) const {
+        using namespace detail;
+        const double u = 1.0 - theta;
+        return r1 + theta * (r2 + u * (r3 + theta * (r4 + u * r5)));
+    }
+};
+
 template <class F>
-FlightState dopri5_step(const FlightState& y, double t, double h, const F& f, double rtol, double atol,
-                        double& err_norm) {
+DopriStep dopri5_step(const FlightState& y, double t, double h, const F& f, double rtol, double atol) {
+    using namespace detail;
     constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
     constexpr double a21 = 1.0 / 5;
     constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
@@ -122,71 +150,44 @@ FlightState dopri5_step(const FlightState& y, double t, double h, const F& f, do
     // e = b - b*, the difference to the embedded 4th-order weights.
     constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
                      e6 = 22.0 / 525, e7 = -1.0 / 40;
+    // Dense output weights (Hairer's DOPRI5, subroutine CONTD5).
+    constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700410799.0,
+                     d4 = -10690763975.0 / 1880347072.0, d5 = 701980252875.0 / 199316789632.0,
+                     d6 = -1453857185.0 / 822651844.0, d7 = 69997945.0 / 29380423.0;
 
-    // Stages for (x, v): dx/dt = v, dv/dt = a.
-    const Vec3 X1 = y.x, V1 = y.v;
-    const Derivative K1 = f(X1, V1, t);
-    const Vec3 X2 = y.x + h * (a21 * V1), V2 = y.v + h * (a21 * K1.a);
-    const Derivative K2 = f(X2, V2, t + c2 * h);
-    const Vec3 X3 = y.x + h * (a31 * V1 + a32 * V2), V3 = y.v + h * (a31 * K1.a + a32 * K2.a);
-    const Derivative K3 = f(X3, V3, t + c3 * h);
-    const Vec3 X4 = y.x + h * (a41 * V1 + a42 * V2 + a43 * V3), V4 = y.v + h * (a41 * K1.a + a42 * K2.a + a43 * K3.a);
-    const Derivative K4 = f(X4, V4, t + c4 * h);
-    const Vec3 X5 = y.x + h * (a51 * V1 + a52 * V2 + a53 * V3 + a54 * V4),
-               V5 = y.v + h * (a51 * K1.a + a52 * K2.a + a53 * K3.a + a54 * K4.a);
-    const Derivative K5 = f(X5, V5, t + c5 * h);
-    const Vec3 X6 = y.x + h * (a61 * V1 + a62 * V2 + a63 * V3 + a64 * V4 + a65 * V5),
-               V6 = y.v + h * (a61 * K1.a + a62 * K2.a + a63 * K3.a + a64 * K4.a + a65 * K5.a);
-    const Derivative K6 = f(X6, V6, t + h);
-    FlightState out;
-    out.x = y.x + h * (b1 * V1 + b3 * V3 + b4 * V4 + b5 * V5 + b6 * V6);
-    out.v = y.v + h * (b1 * K1.a + b3 * K3.a + b4 * K4.a + b5 * K5.a + b6 * K6.a);
-    out.drag_loss = y.drag_loss + h * (b1 * K1.drag_power + b3 * K3.drag_power + b4 * K4.drag_power +
-                                       b5 * K5.drag_power + b6 * K6.drag_power);
-    out.wind_gain = y.wind_gain + h * (b1 * K1.wind_power + b3 * K3.wind_power + b4 * K4.wind_power +
-                                       b5 * K5.wind_power + b6 * K6.wind_power);
-    // 7th stage at the new point (FSAL in a full implementation) for the error estimate.
-    const Derivative K7 = f(out.x, out.v, t + h);
-    const Vec3 ex = h * (e1 * V1 + e3 * V3 + e4 * V4 + e5 * V5 + e6 * V6 + e7 * out.v);
-    const Vec3 ev = h * (e1 * K1.a + e3 * K3.a + e4 * K4.a + e5 * K5.a + e6 * K6.a + e7 * K7.a);
+    auto stage = [&](const FlightState& ys, double ts) { return rate(ys.v, f(ys.x, ys.v, ts)); };
+    const FlightState k1 = stage(y, t);
+    const FlightState k2 = stage(y + h * (a21 * k1), t + c2 * h);
+    const FlightState k3 = stage(y + h * (a31 * k1 + a32 * k2), t + c3 * h);
+    const FlightState k4 = stage(y + h * (a41 * k1 + a42 * k2 + a43 * k3), t + c4 * h);
+    const FlightState k5 = stage(y + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4), t + c5 * h);
+    const FlightState k6 = stage(y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5), t + h);
+    DopriStep out;
+    out.y1 = y + h * (b1 * k1 + b3 * k3 + b4 * k4 + b5 * k5 + b6 * k6);
+    // The 7th stage, at the new point, serves the error estimate and the dense output.
+    const FlightState k7 = stage(out.y1, t + h);
+    const FlightState err = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
     double norm = 0.0;
     for (int i = 0; i < 3; ++i) {
-        norm = std::max(norm, std::abs(ex[i]) / (atol + rtol * std::max(std::abs(y.x[i]), std::abs(out.x[i]))));
-        norm = std::max(norm, std::abs(ev[i]) / (atol + rtol * std::max(std::abs(y.v[i]), std::abs(out.v[i]))));
+        norm = std::max(norm, std::abs(err.x[i]) / (atol + rtol * std::max(std::abs(y.x[i]), std::abs(out.y1.x[i]))));
+        norm = std::max(norm, std::abs(err.v[i]) / (atol + rtol * std::max(std::abs(y.v[i]), std::abs(out.y1.v[i]))));
     }
-    err_norm = norm;
+    out.err_norm = norm;
+    const FlightState diff = out.y1 - y;
+    const FlightState bspl = h * k1 - diff;
+    out.r1 = y;
+    out.r2 = diff;
+    out.r3 = bspl;
+    out.r4 = diff - h * k7 - bspl;
+    out.r5 = h * (d1 * k1 + d3 * k3 + d4 * k4 + d5 * k5 + d6 * k6 + d7 * k7);
     return out;
 }
 
-// Adaptive Dormand-Prince over [t, t + h]: as many internal steps as the tolerance needs
-// (Hairer, Norsett & Wanner, Solving ODEs I, II.4: step-size control with safety 0.9,
-// factor limits 0.2..5). `hint` carries the last good internal step between calls.
-template <class F>
-FlightState dopri5_adaptive(const FlightState& y0, double t, double h, const F& f, double rtol, double atol,
-                            double& hint, AdaptiveStats& stats) {
-    FlightState y = y0;
-    double done = 0.0;
-    double step = (hint > 0.0 && hint < h) ? hint : h;
-    int guard = 0;
-    while (done < h && guard++ < 100000) {
-        const bool last = step >= h - done;
-        const double s = last ? h - done : step;
-        double err = 0.0;
-        const FlightState trial = dopri5_step(y, t + done, s, f, rtol, atol, err);
-        if (err <= 1.0 || s <= 1e-12 * h) {
-            ++stats.accepted;
-            y = trial;
-            done = last ? h : done + s;
-            const double grow = err > 0.0 ? std::min(5.0, 0.9 * std::pow(err, -0.2)) : 5.0;
-            if (!last || grow < 1.0) step = s * grow;  // keep the unclipped step across calls
-            else step = std::max(step, s * grow);
-        } else {
-            ++stats.rejected;
-            step = s * std::max(0.2, 0.9 * std::pow(err, -0.2));
-        }
-    }
-    hint = step;
-    return y;
+// Step-size control for the adaptive Dormand-Prince driver (Hairer, Norsett & Wanner, II.4:
+// safety 0.9, factor limits 0.2..5).
+inline double dopri5_step_factor(double err_norm) {
+    if (err_norm <= 0.0) return 5.0;
+    return std::clamp(0.9 * std::pow(err_norm, -0.2), 0.2, 5.0);
 }
 
 }  // namespace pl

@@ -1,7 +1,8 @@
 // Advances one particle through one fixed step, with exact wall handling:
 //  * in flight the chosen method integrates; if the end of the step is outside a wall, the
 //    time of impact is located on the step's own trajectory (the method re-run with a shorter
-//    step, a continuous function of the step length) by a bracketing root search, the
+//    step, a continuous function of the step length; for adaptive Dormand-Prince, its dense
+//    output inside the internal step that crossed) by a bracketing root search, the
 //    particle is advanced to the wall, the impact response is applied, and the rest of the
 //    step continues from there;
 //  * a particle resting on walls (rebound speed fell below rest_speed while the net force
@@ -55,20 +56,24 @@ public:
                 slide(p, id, t, remaining);
                 return;
             }
-            const FlightState end = flight(p, t, remaining);
             int wall = -1;
             double s_hit = remaining;
-            for (int w = 0; w < wall_count; ++w) {
-                if (c_.room->distance(w, end.x, p.radius) >= 0.0) continue;
-                const double s = time_of_impact(p, w, t, remaining);
-                if (wall < 0 || s < s_hit) { wall = w; s_hit = s; }
-            }
-            if (wall < 0) {
-                p.y = end;
-                return;
+            if (adaptive()) {
+                if (!adaptive_flight(p, t, remaining, wall, s_hit)) return;
+            } else {
+                const FlightState end = flight(p, t, remaining);
+                for (int w = 0; w < wall_count; ++w) {
+                    if (c_.room->distance(w, end.x, p.radius) >= 0.0) continue;
+                    const double s = time_of_impact(p, w, t, remaining);
+                    if (wall < 0 || s < s_hit) { wall = w; s_hit = s; }
+                }
+                if (wall < 0) {
+                    p.y = end;
+                    return;
+                }
+                if (s_hit > 0.0) p.y = flight(p, t, s_hit);
             }
             ++*c_.contact_solves;
-            if (s_hit > 0.0) p.y = flight(p, t, s_hit);
             p.y.x[RoomBounds::axis(wall)] = c_.room->contact_plane(wall, p.radius);
             p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
             t += s_hit;
@@ -85,23 +90,66 @@ private:
             case Method::velocity_verlet: return velocity_verlet_step(p.y, t, h, f_);
             case Method::rk4: return rk4_step(p.y, t, h, f_);
             case Method::exponential: return exponential_step(p.y, t, h, f_);
-            case Method::dopri5:
-                if (c_.adaptive == nullptr) {
-                    double err = 0.0;
-                    return dopri5_step(p.y, t, h, f_, c_.rtol, c_.atol, err);
-                }
-                return dopri5_adaptive(p.y, t, h, f_, c_.rtol, c_.atol, p.step_hint, *c_.adaptive);
+            case Method::dopri5: return dopri5_step(p.y, t, h, f_, c_.rtol, c_.atol).y1;  // fixed step
         }
         return p.y;
     }
 
-    // Earliest s in [0, h] at which the sphere touches `wall`, given it is beyond it at s = h.
-    // Bisection while the lower end is on the wall (the root could be at 0 or later), then
-    // Illinois regula falsi (Dahlquist & Bjorck), which converges superlinearly.
+    bool adaptive() const { return c_.method == Method::dopri5 && c_.adaptive != nullptr; }
+
+    // Adaptive Dormand-Prince over [t, t + h], as many internal steps as the tolerance needs.
+    // After each accepted internal step the walls are checked; an impact inside it is located
+    // on the method's dense output, and p.y is set to the state there. Returns whether a wall
+    // was hit (then `wall` and `s_hit`, the time from t, are set); otherwise p.y is the state
+    // at t + h. p.step_hint carries the last good internal step between calls.
+    bool adaptive_flight(ParticleStep& p, double t, double h, int& wall, double& s_hit) const {
+        double done = 0.0;
+        double step = (p.step_hint > 0.0 && p.step_hint < h) ? p.step_hint : h;
+        for (int guard = 0; done < h && guard < 100000; ++guard) {
+            const bool last = step >= h - done;
+            const double s = last ? h - done : step;
+            const DopriStep trial = dopri5_step(p.y, t + done, s, f_, c_.rtol, c_.atol);
+            if (trial.err_norm > 1.0 && s > 1e-12 * h) {
+                ++c_.adaptive->rejected;
+                step = s * dopri5_step_factor(trial.err_norm);
+                continue;
+            }
+            ++c_.adaptive->accepted;
+            const double grown = s * dopri5_step_factor(trial.err_norm);
+            p.step_hint = last ? std::max(step, grown) : grown;
+            wall = -1;
+            double theta_hit = 1.0;
+            for (int w = 0; w < wall_count; ++w) {
+                if (c_.room->distance(w, trial.y1.x, p.radius) >= 0.0) continue;
+                const double theta = find_contact(
+                    [&](double th) { return c_.room->distance(w, trial.at(th).x, p.radius); }, 1.0);
+                if (wall < 0 || theta < theta_hit) { wall = w; theta_hit = theta; }
+            }
+            if (wall >= 0) {
+                p.y = trial.at(theta_hit);
+                s_hit = std::min(h, done + theta_hit * s);
+                return true;
+            }
+            p.y = trial.y1;
+            done = last ? h : done + s;
+            step = p.step_hint;
+        }
+        return false;
+    }
+
+    // Earliest s in [0, h] at which the sphere touches `wall`, given it is beyond it at s = h,
+    // on the fixed-step method's own trajectory (the step re-run with length s).
     double time_of_impact(ParticleStep& p, int wall, double t, double h) const {
+        return find_contact([&](double s) { return c_.room->distance(wall, flight(p, t, s).x, p.radius); }, h);
+    }
+
+    // Root of a wall distance d(s) on [0, h], d(h) < 0: bisection while the lower end is on the
+    // wall (the root could be at 0 or later), then Illinois regula falsi (Dahlquist & Bjorck),
+    // which converges superlinearly. Returns the end of the bracket at or just past the wall.
+    template <class Distance>
+    static double find_contact(const Distance& d, double h) {
         double lo = 0.0, hi = h;
-        double f_lo = c_.room->distance(wall, p.y.x, p.radius);
-        double f_hi = c_.room->distance(wall, flight(p, t, h).x, p.radius);
+        double f_lo = d(lo), f_hi = d(hi);
         int side = 0;
         for (int it = 0; it < 80 && hi - lo > 1e-15 * h; ++it) {
             double s;
@@ -111,7 +159,7 @@ private:
                 s = lo + (hi - lo) * f_lo / (f_lo - f_hi);
                 if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
             }
-            const double f_s = c_.room->distance(wall, flight(p, t, s).x, p.radius);
+            const double f_s = d(s);
             if (f_s > 0.0) {
                 lo = s;
                 f_lo = f_s;
