@@ -42,4 +42,7 @@ SaveResult save_preset(const std::filesystem::path& file, const Scene& scene);
 // Largest particle count a preset may ask for (explicit + emitted).
 constexpr std::size_t max_preset_particles = 2'000'000;
 
+// Largest preset file load_preset reads (and save_preset writes), in bytes.
+constexpr std::size_t max_preset_file_bytes = 64u << 20;
+
 }  // namespace pl

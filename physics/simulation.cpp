@@ -2,6 +2,7 @@
 
 #include "drag.hpp"
 #include "energy.hpp"
+#include "fast_kernel.hpp"
 #include "particle_stepper.hpp"
 
 #include <fmt/format.h>
@@ -83,7 +84,8 @@ StepKernel pick_wind(bool has_wind) {
     return has_wind ? &step_kernel<Drag, true> : &step_kernel<Drag, false>;
 }
 
-StepKernel pick_kernel(const Model& m) {
+StepKernel pick_kernel(const Model& m, KernelChoice choice) {
+    if (choice == KernelChoice::fast) return pick_fast_kernel(m);
     // Wind acts only through drag: without drag the wind field is never consulted.
     const bool wind = m.world.wind.kind != WindKind::none && m.drag.model != DragModel::none;
     switch (m.drag.model) {
@@ -118,8 +120,13 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
         re_max_.assign(particles.size(), 0.0);
     }
     if (model_.integrator.method == Method::dopri5) adaptive_step_hint_.assign(particles.size(), 0.0);
-    kernel_ = pick_kernel(model_);
+    kernel_ = pick_kernel(model_, kernel_choice_);
     monitor();
+}
+
+void Simulation::set_kernel(KernelChoice choice) {
+    kernel_choice_ = choice;
+    kernel_ = pick_kernel(model_, kernel_choice_);
 }
 
 void Simulation::step() {

@@ -20,6 +20,7 @@ struct ForceCounters {
     std::uint64_t rejected_steps = 0;  // dopri5 only
     std::uint64_t accepted_steps = 0;  // dopri5 internal steps
     std::uint64_t contacts = 0;        // time-of-impact solves
+    std::uint64_t fast_path = 0;       // particle-steps the vectorised fast path finished
 };
 
 enum class WarningKind : std::uint8_t {
@@ -40,6 +41,10 @@ struct Warning {
 class Simulation;
 using StepKernel = void (*)(Simulation&);
 
+// fast: the production kernel (fast_kernel.hpp: vectorised flight, threads); generic: the
+// scalar reference kernel, one ParticleStepper::advance per particle. Results are bit-identical.
+enum class KernelChoice : std::uint8_t { fast, generic };
+
 class Simulation {
 public:
     Simulation(Model model, const std::vector<ParticleSpec>& particles);
@@ -56,6 +61,13 @@ public:
     const ParticleState& state() const { return state_; }
     std::size_t particle_count() const { return state_.size(); }
     const WindField& wind() const { return wind_; }
+
+    // Threads for the particle loop: 0 = all hardware threads (the default), 1 = single-threaded.
+    // Results are bit-identical for every setting; small scenes always run on one thread.
+    void set_threads(int threads) { threads_ = threads < 0 ? 0 : threads; }
+    int threads() const { return threads_; }
+    void set_kernel(KernelChoice choice);
+    KernelChoice kernel() const { return kernel_choice_; }
 
     // Sets a particle's velocity (a kick); it leaves any wall it is pushed away from.
     void set_velocity(std::size_t i, const Vec3& v);
@@ -91,6 +103,8 @@ private:
     WindField wind_;
     ParticleState state_;
     StepKernel kernel_ = nullptr;
+    KernelChoice kernel_choice_ = KernelChoice::fast;
+    int threads_ = 0;
     std::uint64_t steps_ = 0;
     std::vector<Event> events_;
     std::uint64_t dropped_events_ = 0;

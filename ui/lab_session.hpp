@@ -15,6 +15,7 @@
 namespace pl::ui {
 
 struct PlotHistory;  // ui/plot_history.hpp: bounded per-series sample buffers
+struct PanelState;   // ui/panel_state.hpp: what the panels remember between frames
 
 // What the shell measured this frame (shown in the status bar).
 struct FrameStats {
@@ -33,6 +34,9 @@ struct Requests {
     bool relaunch = false;           // L: launch particle 0 again with launch_velocity
     bool screenshot = false;
     std::filesystem::path screenshot_path;
+    // When crop_w > 0 the screenshot keeps only this rectangle, in ImGui display coordinates
+    // (origin top left; the shell scales by the framebuffer scale). Used to export one plot.
+    float crop_x = 0.0f, crop_y = 0.0f, crop_w = 0.0f, crop_h = 0.0f;
     bool quit = false;
 };
 
@@ -51,6 +55,8 @@ struct LabSession {
     Requests requests;
     FrameStats frame;
     std::shared_ptr<PlotHistory> history;      // created by the ui on first use
+    std::shared_ptr<PanelState> panels;        // created by the ui on first use
+    std::filesystem::path preset_dir;          // shipped presets (the shell sets PL_PRESET_DIR)
 
     // 3D view options (the shell's view toolbar edits them; panels may too).
     bool show_trails = true;

@@ -1,17 +1,69 @@
 #include "cli/commands.hpp"
 
+#include "cli/cli_support.hpp"
+
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <cstring>
+#include <exception>
+#include <iostream>
 
 namespace pl::cli {
 
+namespace {
+
+constexpr const char* commands[] = {"run", "validate", "compare", "accuracy", "stability", "advise", "bench"};
+
+constexpr const char* description =
+    "particle-lab: a lab for Newtonian particle experiments (gravity, air drag, wind, bouncing in a room).\n"
+    "Without a command it opens the GUI:  particle-lab [PRESET]  (default presets/default.json).\n"
+    "Commands run headless. Exit codes: 0 ok, 1 runtime failure, 2 bad input.";
+
+}  // namespace
+
 bool is_subcommand(int argc, char** argv) {
-    return argc > 1 && std::strcmp(argv[1], "run") == 0;
+    if (argc < 2) return false;
+    for (const char* c : commands)
+        if (std::strcmp(argv[1], c) == 0) return true;
+    return std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0 ||
+           std::strcmp(argv[1], "help") == 0;
 }
 
-int run_command(int, char**) {
-    std::fprintf(stderr, "not yet\n");
-    return 1;
+int run_command(int argc, char** argv) {
+    CLI::App app(description, "particle-lab");
+    app.require_subcommand(1);
+    app.fallthrough(false);
+    app.get_formatter()->column_width(30);
+    app.footer("Run 'particle-lab COMMAND --help' for the options of a command.");
+    int exit_code = exit_ok;
+    add_run_command(app, exit_code);
+    add_validate_command(app, exit_code);
+    add_compare_command(app, exit_code);
+    add_accuracy_command(app, exit_code);
+    add_stability_command(app, exit_code);
+    add_advise_command(app, exit_code);
+    add_bench_command(app, exit_code);
+    if (argc >= 2 && std::strcmp(argv[1], "help") == 0) {
+        std::cout << app.help();
+        return exit_ok;
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e) == 0 ? exit_ok : exit_bad_input;
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e) == 0 ? exit_ok : exit_bad_input;
+    } catch (const CLI::ParseError& e) {
+        const std::string sub = app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name();
+        std::fprintf(stderr, "particle-lab%s%s: %s\nRun 'particle-lab %s%s--help' for the options.\n",
+                     sub.empty() ? "" : " ", sub.c_str(), e.what(), sub.c_str(), sub.empty() ? "" : " ");
+        return exit_bad_input;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "particle-lab: runtime failure: %s\n", e.what());
+        return exit_runtime_failure;
+    }
+    return exit_code;
 }
 
 }  // namespace pl::cli

@@ -1,0 +1,82 @@
+// Engine throughput: Simulation::step() as the GUI and CLI call it (the stepping kernel, then
+// the event cap and the monitor: NaN guard, drag validity and stability checks), and the
+// stepping kernel alone (fast_kernel.hpp), to show where the time goes.
+#include "physics/fast_kernel.hpp"
+#include "physics/simulation.hpp"
+#include "physics/thread_pool.hpp"
+#include "registry.hpp"
+#include "workloads.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+namespace pl::bench {
+
+namespace {
+
+// kernel_only: calls the kernel Simulation::step() would call, without the bookkeeping after it.
+void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads, bool kernel_only) {
+    const StepKernel kernel = pick_fast_kernel(scene.model);
+    auto fresh = [&] {
+        Simulation sim(scene.model, scene.particles);
+        sim.set_threads(threads);
+        return sim;
+    };
+    Simulation sim = fresh();
+    int steps = 0;
+    for (auto _ : state) {
+        if (steps == steps_per_window) {
+            state.PauseTiming();
+            sim = fresh();
+            steps = 0;
+            state.ResumeTiming();
+        }
+        if (kernel_only) kernel(sim);
+        else sim.step();
+        ++steps;
+    }
+    benchmark::DoNotOptimize(sim.state().x.data());
+    state.counters[rate_counter] = benchmark::Counter(
+        static_cast<double>(state.iterations()) * static_cast<double>(scene.particles.size()), benchmark::Counter::kIsRate);
+}
+
+void register_engine(Workload w, std::size_t n, int threads, Method method, const std::string& name,
+                     bool kernel_only = false) {
+    benchmark::RegisterBenchmark(name.c_str(), [w, n, threads, method, kernel_only](benchmark::State& state) {
+        const WorkloadScene scene = make_workload(w, n, method);
+        run_engine(state, scene, threads, kernel_only);
+    })->UseRealTime()->Unit(benchmark::kMicrosecond);
+}
+
+std::vector<int> thread_settings() {
+    std::vector<int> settings{1};
+    if (hardware_threads() > 1) settings.push_back(hardware_threads());
+    return settings;
+}
+
+}  // namespace
+
+void register_engine_benchmarks() {
+    for (Workload w : {Workload::gravity, Workload::drag_walls, Workload::drag_walls_shear})
+        for (std::size_t n : sizes)
+            for (int threads : thread_settings())
+                register_engine(w, n, threads, Method::semi_implicit_euler,
+                                std::string("engine/") + to_string(w) + "/n:" + size_label(n) +
+                                    "/threads:" + std::to_string(threads));
+    for (std::size_t n : sizes)
+        for (int threads : thread_settings())
+            register_engine(Workload::drag_walls, n, threads, Method::semi_implicit_euler,
+                            "kernel/drag_walls/n:" + size_label(n) + "/threads:" + std::to_string(threads), true);
+}
+
+void register_method_benchmarks() {
+    for (Method m : {Method::explicit_euler, Method::semi_implicit_euler, Method::velocity_verlet, Method::rk4,
+                     Method::dopri5, Method::exponential})
+        for (std::size_t n : {std::size_t{1}, std::size_t{1000}, std::size_t{100000}})
+            register_engine(Workload::drag_walls, n, 1, m,
+                            std::string("method/") + to_string(m) + "/n:" + size_label(n));
+}
+
+}  // namespace pl::bench

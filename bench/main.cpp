@@ -1,0 +1,202 @@
+// pl_bench: runs every benchmark (Google Benchmark flags work as usual, e.g.
+// --benchmark_filter=engine/drag_walls) and then prints the ratio tables the README quotes:
+// engine against the hand-fused limit and the object-oriented baseline, thread scaling,
+// each integrator's cost relative to semi-implicit Euler, and the price of accuracy.
+#include "physics/thread_pool.hpp"
+#include "registry.hpp"
+#include "workloads.hpp"
+
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pl::bench {
+
+namespace {
+
+struct Measured {
+    std::vector<double> rates;            // particle-steps per second, one per repetition
+    std::vector<double> seconds_per_run;  // wall time per iteration
+    std::map<std::string, double> counters;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Shows the usual console output and keeps every run for the ratio tables.
+class CollectingReporter : public benchmark::ConsoleReporter {
+public:
+    bool ReportContext(const Context& context) override { return ConsoleReporter::ReportContext(context); }
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& r : runs) {
+            if (r.error_occurred || r.run_type != Run::RT_Iteration || r.iterations == 0) continue;
+            Measured& m = results_[r.run_name.function_name];
+            if (const auto it = r.counters.find(rate_counter); it != r.counters.end()) m.rates.push_back(it->second.value);
+            m.seconds_per_run.push_back(r.real_accumulated_time / static_cast<double>(r.iterations));
+            for (const auto& [name, counter] : r.counters) m.counters[name] = counter.value;
+        }
+    }
+
+    std::optional<double> rate(const std::string& name) const {
+        const auto it = results_.find(name);
+        if (it == results_.end() || it->second.rates.empty()) return std::nullopt;
+        return median(it->second.rates);
+    }
+    const Measured* find(const std::string& name) const {
+        const auto it = results_.find(name);
+        return it == results_.end() ? nullptr : &it->second;
+    }
+
+private:
+    std::map<std::string, Measured> results_;
+};
+
+std::string rate_text(std::optional<double> r) { return r ? fmt::format("{:.3g}", *r) : "-"; }
+std::string ratio_text(std::optional<double> a, std::optional<double> b, const char* suffix = "") {
+    return a && b ? fmt::format("{:.2f}{}", *a / *b, suffix) : "-";
+}
+
+void print_comparison(const CollectingReporter& r, int all_threads) {
+    bool any = false;
+    for (std::size_t n : sizes)
+        any = any || r.rate("engine/drag_walls/n:" + size_label(n) + "/threads:1") ||
+              r.rate("kernel/drag_walls/n:" + size_label(n) + "/threads:1") ||
+              r.rate("limit_hand_fused/drag_walls/n:" + size_label(n)) || r.rate("baseline_oo/drag_walls/n:" + size_label(n));
+    if (!any) return;
+    fmt::print("\n## Engine vs references: gravity + quadratic drag + six walls (particle-steps/s)\n\n");
+    fmt::print("engine = Simulation::step() (kernel + event cap + monitor); kernel = the stepping kernel alone.\n\n");
+    fmt::print("| n | engine | kernel | hand-fused limit | OO baseline | engine/limit | kernel/limit | engine/baseline | "
+               "limit/baseline | engine, {0} threads | speed-up | kernel, {0} threads | speed-up |\n",
+               all_threads);
+    fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (std::size_t n : sizes) {
+        const std::string size = size_label(n);
+        const std::string all = "/threads:" + std::to_string(all_threads);
+        const auto engine = r.rate("engine/drag_walls/n:" + size + "/threads:1");
+        const auto engine_all = all_threads > 1 ? r.rate("engine/drag_walls/n:" + size + all) : std::nullopt;
+        const auto kernel = r.rate("kernel/drag_walls/n:" + size + "/threads:1");
+        const auto kernel_all = all_threads > 1 ? r.rate("kernel/drag_walls/n:" + size + all) : std::nullopt;
+        const auto limit = r.rate("limit_hand_fused/drag_walls/n:" + size);
+        const auto baseline = r.rate("baseline_oo/drag_walls/n:" + size);
+        if (!engine && !kernel && !limit && !baseline) continue;
+        fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", size, rate_text(engine),
+                   rate_text(kernel), rate_text(limit), rate_text(baseline), ratio_text(engine, limit),
+                   ratio_text(kernel, limit), ratio_text(engine, baseline), ratio_text(limit, baseline),
+                   rate_text(engine_all), ratio_text(engine_all, engine, "x"), rate_text(kernel_all),
+                   ratio_text(kernel_all, kernel, "x"));
+    }
+}
+
+void print_workloads(const CollectingReporter& r, int all_threads) {
+    bool any = false;
+    for (Workload w : {Workload::gravity, Workload::drag_walls, Workload::drag_walls_shear})
+        for (std::size_t n : sizes)
+            any = any || r.rate(std::string("engine/") + to_string(w) + "/n:" + size_label(n) + "/threads:1");
+    if (!any) return;
+    fmt::print("\n## Engine by workload (particle-steps/s; ns per particle-step, 1 thread)\n\n");
+    fmt::print("| workload | n | 1 thread | {} threads | speed-up | ns/particle-step |\n", all_threads);
+    fmt::print("|---|---|---|---|---|---|\n");
+    for (Workload w : {Workload::gravity, Workload::drag_walls, Workload::drag_walls_shear})
+        for (std::size_t n : sizes) {
+            const std::string base = std::string("engine/") + to_string(w) + "/n:" + size_label(n) + "/threads:";
+            const auto one = r.rate(base + "1");
+            const auto all = all_threads > 1 ? r.rate(base + std::to_string(all_threads)) : std::nullopt;
+            if (!one && !all) continue;
+            fmt::print("| {} | {} | {} | {} | {} | {} |\n", to_string(w), size_label(n), rate_text(one),
+                       rate_text(all), ratio_text(all, one, "x"), one ? fmt::format("{:.2f}", 1e9 / *one) : "-");
+        }
+}
+
+void print_methods(const CollectingReporter& r) {
+    const char* methods[] = {"explicit_euler", "semi_implicit_euler", "velocity_verlet", "rk4", "dopri5",
+                             "exponential"};
+    const std::size_t counts[] = {1, 1000, 100000};
+    bool any = false;
+    for (const char* m : methods)
+        for (std::size_t n : counts) any = any || r.rate(std::string("method/") + m + "/n:" + size_label(n));
+    if (!any) return;
+    fmt::print("\n## Integrators on gravity + quadratic drag + walls: cost per particle-step "
+               "(ns, 1 thread) and relative to semi-implicit Euler\n\n");
+    fmt::print("| method | n = 1 | n = 1k | n = 100k | ratio n = 1 | ratio n = 1k | ratio n = 100k |\n");
+    fmt::print("|---|---|---|---|---|---|---|\n");
+    for (const char* m : methods) {
+        std::string cost[3], ratio[3];
+        for (int k = 0; k < 3; ++k) {
+            const std::string n = size_label(counts[k]);
+            const auto rate = r.rate(std::string("method/") + m + "/n:" + n);
+            const auto euler = r.rate("method/semi_implicit_euler/n:" + n);
+            cost[k] = rate ? fmt::format("{:.1f}", 1e9 / *rate) : "-";
+            ratio[k] = ratio_text(euler, rate);
+        }
+        fmt::print("| {} | {} | {} | {} | {} | {} | {} |\n", m, cost[0], cost[1], cost[2], ratio[0], ratio[1],
+                   ratio[2]);
+    }
+}
+
+void print_accuracy(const CollectingReporter& r) {
+    const Measured* d6 = r.find("accuracy/dopri5/to:1e-6");
+    const Measured* d9 = r.find("accuracy/dopri5/to:1e-9");
+    const Measured* e2 = r.find("accuracy/semi_implicit_euler/dt:2ms");
+    const Measured* e6 = r.find("accuracy/semi_implicit_euler/to:1e-6");
+    if (!d6 && !d9 && !e2 && !e6) return;
+    fmt::print("\n## Price of accuracy: 2 s drag trajectory, error of the end position against a tight "
+               "reference\n\n");
+    fmt::print("| run | setting | error (m) | force evaluations | wall time (us) | time / SIE at dt = 2 ms |\n");
+    fmt::print("|---|---|---|---|---|---|\n");
+    const double euler_time = e2 ? median(e2->seconds_per_run) : 0.0;
+    auto row = [&](const char* label, const Measured* m, bool tolerance) {
+        if (!m) return;
+        const double t = median(m->seconds_per_run);
+        const std::string setting = tolerance ? fmt::format("rtol = atol = {:.2g}", m->counters.at("tol"))
+                                              : fmt::format("dt = {:.3g} s", m->counters.at("dt_s"));
+        fmt::print("| {} | {} | {:.2g} | {:.0f} | {:.1f} | {} |\n", label, setting, m->counters.at("error_m"),
+                   m->counters.at("force_evals"), 1e6 * t, euler_time > 0 ? fmt::format("{:.2f}", t / euler_time) : "-");
+    };
+    row("semi-implicit Euler, default dt", e2, false);
+    row("semi-implicit Euler to 1e-6 m", e6, false);
+    row("dopri5 to 1e-6 m", d6, true);
+    row("dopri5 to 1e-9 m", d9, true);
+    if (e6 && d6)
+        fmt::print("\nTo reach 1e-6 m, semi-implicit Euler costs {:.0f}x what adaptive Dormand-Prince costs.\n",
+                   median(e6->seconds_per_run) / median(d6->seconds_per_run));
+    if (e6 && d9) {
+        // First order: 1000x less error needs 1000x the steps.
+        const double euler_9 = 1000.0 * median(e6->seconds_per_run);
+        fmt::print("To reach 1e-9 m it would need about {:.3g} s (extrapolated: error ~ dt), {:.0f}x dopri5's "
+                   "cost.\n",
+                   euler_9, euler_9 / median(d9->seconds_per_run));
+    }
+}
+
+}  // namespace
+
+}  // namespace pl::bench
+
+int main(int argc, char** argv) {
+    using namespace pl::bench;
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+    register_engine_benchmarks();
+    register_limit_benchmarks();
+    register_baseline_benchmarks();
+    register_method_benchmarks();
+    register_accuracy_benchmarks();
+    CollectingReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    const int all_threads = pl::hardware_threads();
+    print_comparison(reporter, all_threads);
+    print_workloads(reporter, all_threads);
+    print_methods(reporter);
+    print_accuracy(reporter);
+    benchmark::Shutdown();
+    return 0;
+}

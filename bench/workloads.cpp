@@ -1,0 +1,59 @@
+#include "workloads.hpp"
+
+#include "physics/drag.hpp"
+#include "physics/emitter.hpp"
+
+namespace pl::bench {
+
+const char* to_string(Workload w) {
+    switch (w) {
+        case Workload::gravity: return "gravity";
+        case Workload::drag_walls: return "drag_walls";
+        case Workload::drag_walls_shear: return "drag_walls_shear";
+    }
+    return "?";
+}
+
+WorkloadScene make_workload(Workload w, std::size_t n, Method method) {
+    WorkloadScene s;
+    Model& m = s.model;
+    m.label = to_string(w);
+    m.room.center = {0.0, 3.0, 0.0};
+    m.room.size = {10.0, 6.0, 10.0};
+    m.contact.restitution = 0.8;
+    m.contact.friction = 0.0;
+    m.contact.rest_speed = 0.05;
+    m.integrator.method = method;
+    m.integrator.dt = 0.002;
+    if (w != Workload::gravity) {
+        m.drag.model = DragModel::quadratic;
+        m.drag.cd = 0.47;
+    }
+    if (w == Workload::drag_walls_shear) {
+        m.world.wind.kind = WindKind::shear;
+        m.world.wind.velocity = {5.0, 0.0, 0.0};
+        m.world.wind.reference_height_m = 2.0;
+    }
+    Emitter e;
+    e.count = n;
+    e.seed = 2024;
+    e.region_min = m.room.min_corner();
+    e.region_max = m.room.max_corner();
+    e.speed_min = 0.0;
+    e.speed_max = 5.0;
+    e.spread_deg = 180.0;
+    s.particles = emit_particles(e, m.room);
+    return s;
+}
+
+double workload_drag_constant(const Model& m, const ParticleSpec& p) {
+    return drag_coefficients(m.drag, m.world.air, p.mass, p.radius).k;
+}
+
+std::string size_label(std::size_t n) {
+    if (n >= 1000000 && n % 1000000 == 0) return std::to_string(n / 1000000) + "M";
+    if (n >= 1000 && n % 1000 == 0) return std::to_string(n / 1000) + "k";
+    return std::to_string(n);
+}
+
+}  // namespace pl::bench

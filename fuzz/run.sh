@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# ./lab fuzz [SECONDS]: builds the preset-loader fuzzer with clang (libFuzzer + AddressSanitizer +
+# UndefinedBehaviorSanitizer) into build/fuzz/ and runs it for SECONDS (default 60), seeded with
+# the bad-preset catalogue and the shipped presets. Crashing inputs are kept in build/fuzz/.
+set -euo pipefail
+cd "$(dirname "$(readlink -f "$0")")/.."
+
+seconds=${1:-60}
+if ! [[ $seconds =~ ^[0-9]+$ ]] || [ "$seconds" -eq 0 ]; then
+  echo "usage: ./lab fuzz [SECONDS]   (SECONDS: a whole number > 0, default 60)" >&2
+  exit 2
+fi
+
+# clang and its runtime libraries (libFuzzer, sanitizers) are only needed here, so they are
+# installed on demand rather than by ./lab run/test.
+packages=(clang libclang-rt-14-dev nlohmann-json3-dev libfmt-dev libglm-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "fuzz: installing Debian packages: ${missing[*]}" >&2
+  sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+out=build/fuzz
+binary=$out/preset_fuzzer
+# The loader and what it links against; nothing else of physics/ is needed.
+sources=(fuzz/preset_fuzzer.cpp physics/preset_io.cpp physics/preset_reader.cpp physics/scene.cpp physics/emitter.cpp)
+mkdir -p "$out"
+if [ ! -x "$binary" ] || [ -n "$(find "${sources[@]}" physics/*.hpp -newer "$binary" 2>/dev/null | head -1)" ]; then
+  echo "fuzz: building $binary" >&2
+  clang++ -std=c++20 -O1 -g -fno-omit-frame-pointer \
+    -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+    -Wall -Wextra -Wpedantic -I. "${sources[@]}" -lfmt -o "$binary"
+fi
+
+# libFuzzer adds what it finds to its first corpus directory: use a temporary one, so the
+# catalogue in tests/ is only ever read.
+corpus=$(mktemp -d "${TMPDIR:-/tmp}/pl_fuzz_corpus.XXXXXX")
+trap 'rm -rf "$corpus"' EXIT
+cp tests/bad_presets/*.json presets/*.json "$corpus"/
+
+echo "fuzz: running for $seconds s on $(ls "$corpus" | wc -l) seed inputs" >&2
+"$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
+  -dict=fuzz/preset.dict -artifact_prefix="$out/" -print_final_stats=1 "$corpus"

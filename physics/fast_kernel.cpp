@@ -1,0 +1,304 @@
+#include "fast_kernel.hpp"
+
+#include "particle_stepper.hpp"
+#include "thread_pool.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace pl {
+
+namespace {
+
+// The fixed-step methods phase 1 runs; `none` sends every particle to phase 2.
+enum class Flight { none, explicit_euler, semi_implicit_euler, velocity_verlet, rk4 };
+
+template <Flight M, class F>
+FlightState fixed_step(const FlightState& y, double t, double h, const F& f) {
+    if constexpr (M == Flight::explicit_euler) return explicit_euler_step(y, t, h, f);
+    else if constexpr (M == Flight::semi_implicit_euler) return semi_implicit_euler_step(y, t, h, f);
+    else if constexpr (M == Flight::velocity_verlet) return velocity_verlet_step(y, t, h, f);
+    else return rk4_step(y, t, h, f);
+}
+
+// False for Inf and NaN, like std::isfinite, but a plain compare, so it vectorises.
+inline bool finite_value(double v) { return std::abs(v) <= DBL_MAX; }
+
+bool finite_state(const FlightState& y) {
+    return std::isfinite(y.x.x) && std::isfinite(y.x.y) && std::isfinite(y.x.z) && std::isfinite(y.v.x) &&
+           std::isfinite(y.v.y) && std::isfinite(y.v.z) && std::isfinite(y.drag_loss) && std::isfinite(y.wind_gain);
+}
+
+// What one range of particles produced besides its state: kept apart per range and merged in
+// range order, so the merged result does not depend on which thread ran which range.
+struct RangeOutput {
+    std::vector<Event>* events = nullptr;  // the simulation's sink when there is one range
+    std::vector<Event> own_events;
+    std::vector<std::uint32_t> frozen;  // particles frozen during this step, in order
+    ForceCounters counters;
+};
+
+// Phase 1 for particles [begin, end): see fast_kernel.hpp. Writes flagged[i - begin] and
+// returns the number of particles it finished.
+template <Flight M, DragModel Drag, bool HasWind>
+[[gnu::flatten]] std::size_t flight_chunk(ParticleState& s, std::size_t begin, std::size_t end, const Forces<Drag, HasWind>& forces,
+                         const RoomBounds& bounds, double t0, double h, std::uint8_t* flagged) {
+    // Local copies the stores below provably cannot alias.
+    const RoomBounds room = bounds;
+    const double gx = forces.gravity.x, gy = forces.gravity.y, gz = forces.gravity.z;
+    const WindField* const wind = forces.wind;
+    double* const px = s.x.data();
+    double* const py = s.y.data();
+    double* const pz = s.z.data();
+    double* const vx = s.vx.data();
+    double* const vy = s.vy.data();
+    double* const vz = s.vz.data();
+    double* const drag_loss = s.dissipated_drag.data();
+    double* const wind_work = s.wind_work.data();
+    const double* const mass = s.mass.data();
+    const double* const radius = s.radius.data();
+    const double* const drag_k = s.drag_k.data();
+    const double* const re_scale = s.drag_re_scale.data();
+    const std::uint8_t* const resting = s.resting.data();
+    const std::uint8_t* const frozen = s.frozen.data();
+    std::size_t finished = 0;
+#pragma GCC ivdep
+    for (std::size_t i = begin; i < end; ++i) {
+        // Built per particle from scalars: GCC keeps it in registers only if no glm vector is
+        // copied into it whole (the copy of a union-based glm::dvec3 blocks scalarisation).
+        Forces<Drag, HasWind> f;
+        f.gravity.x = gx;
+        f.gravity.y = gy;
+        f.gravity.z = gz;
+        if constexpr (HasWind) f.wind = wind;
+        f.drag = {drag_k[i], re_scale[i]};
+        FlightState y0;
+        y0.x = Vec3(px[i], py[i], pz[i]);
+        y0.v = Vec3(vx[i], vy[i], vz[i]);
+        const FlightState y1 = fixed_step<M>(y0, t0, h, f);
+        const double r = radius[i];
+        // Exactly the generic stepper's "no wall reached" test, wall by wall.
+        const bool inside = (room.distance(0, y1.x, r) >= 0.0) & (room.distance(1, y1.x, r) >= 0.0) &
+                            (room.distance(2, y1.x, r) >= 0.0) & (room.distance(3, y1.x, r) >= 0.0) &
+                            (room.distance(4, y1.x, r) >= 0.0) & (room.distance(5, y1.x, r) >= 0.0);
+        const bool finite = finite_value(y1.x.x) & finite_value(y1.x.y) & finite_value(y1.x.z) &
+                            finite_value(y1.v.x) & finite_value(y1.v.y) & finite_value(y1.v.z) &
+                            finite_value(y1.drag_loss) & finite_value(y1.wind_gain);
+        const bool take = inside & finite & ((resting[i] | frozen[i]) == 0);
+        px[i] = take ? y1.x.x : px[i];
+        py[i] = take ? y1.x.y : py[i];
+        pz[i] = take ? y1.x.z : pz[i];
+        vx[i] = take ? y1.v.x : vx[i];
+        vy[i] = take ? y1.v.y : vy[i];
+        vz[i] = take ? y1.v.z : vz[i];
+        // The generic kernel also adds mass * 0 to the bounce and friction ledgers, which
+        // leaves them unchanged (they start at +0 and never become -0): skipped here.
+        if constexpr (Drag != DragModel::none) {
+            drag_loss[i] = take ? drag_loss[i] + mass[i] * y1.drag_loss : drag_loss[i];
+            if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + mass[i] * y1.wind_gain : wind_work[i];
+        }
+        flagged[i - begin] = !take;
+        finished += take;
+    }
+    return finished;
+}
+
+template <Flight M, DragModel Drag, bool HasWind>
+class RangeStepper {
+public:
+    using F = Forces<Drag, HasWind>;
+
+    RangeStepper(Simulation& sim, RangeOutput& out)
+        : sim_(sim), s_(sim.mutable_state()), m_(sim.model()), room_(m_.room), out_(out),
+          adaptive_on_(m_.integrator.method == Method::dopri5 && m_.integrator.adaptive),
+          ctx_{&room_, &m_.contact, m_.integrator.method, m_.integrator.rtol, m_.integrator.atol, out.events,
+               adaptive_on_ ? &adaptive_ : nullptr, &contact_solves_},
+          stepper_(ctx_, f_), t0_(sim.time()), h_(m_.integrator.dt) {
+        f_.gravity = m_.world.gravity;
+        f_.wind = &sim.wind();
+    }
+
+    void run(std::size_t begin, std::size_t end) {
+        std::size_t fast = 0;
+        if constexpr (M == Flight::none) {
+            for (std::size_t i = begin; i < end; ++i) step_generic(i);
+        } else {
+            std::uint8_t flagged[fast_chunk];
+            for (std::size_t c = begin; c < end; c += fast_chunk) {
+                const std::size_t c_end = std::min(end, c + fast_chunk);
+                fast += flight_chunk<M>(s_, c, c_end, f_, room_, t0_, h_, flagged);
+                for (std::size_t i = c; i < c_end; ++i)
+                    if (flagged[i - c]) step_generic(i);
+            }
+        }
+        ForceCounters& c = out_.counters;
+        c.gravity += f_.gravity_evals;
+        c.drag += f_.drag_evals;
+        c.wind += f_.wind_evals;
+        c.accepted_steps += adaptive_.accepted;
+        c.rejected_steps += adaptive_.rejected;
+        c.contacts += contact_solves_;
+        c.fast_path += fast;
+        if (fast > 0) {
+            // Phase 1 evaluated the forces of every finished particle once per method stage.
+            F probe = f_;
+            probe.gravity_evals = probe.drag_evals = probe.wind_evals = 0;
+            fixed_step<M>(FlightState{}, t0_, h_, probe);
+            c.gravity += fast * probe.gravity_evals;
+            c.drag += fast * probe.drag_evals;
+            c.wind += fast * probe.wind_evals;
+        }
+    }
+
+private:
+    // The generic kernel's per-particle body (simulation.cpp, step_kernel), operation for operation.
+    void step_generic(std::size_t i) {
+        if (s_.frozen[i]) return;
+        const auto id = static_cast<std::uint32_t>(i);
+        f_.drag = {s_.drag_k[i], s_.drag_re_scale[i]};
+        ParticleStep p;
+        p.y.x = s_.position(i);
+        p.y.v = s_.velocity(i);
+        p.radius = s_.radius[i];
+        p.resting = s_.resting[i];
+        std::vector<double>& hints = sim_.adaptive_step_hint();
+        if (adaptive_on_) p.step_hint = hints[i];
+        stepper_.advance(p, id, t0_, h_);
+        if (!finite_state(p.y)) {
+            s_.frozen[i] = 1;
+            out_.events->push_back({t0_, id, -1, EventKind::frozen, glm::length(s_.velocity(i)), 0.0});
+            out_.frozen.push_back(id);
+            return;
+        }
+        s_.set_position(i, p.y.x);
+        s_.set_velocity(i, p.y.v);
+        s_.resting[i] = p.resting;
+        if (adaptive_on_) hints[i] = p.step_hint;
+        const double mass = s_.mass[i];
+        s_.dissipated_bounce[i] += mass * p.bounce_loss;
+        s_.dissipated_friction[i] += mass * p.friction_loss;
+        if constexpr (Drag != DragModel::none) {
+            s_.dissipated_drag[i] += mass * p.y.drag_loss;
+            if constexpr (HasWind) s_.wind_work[i] += mass * p.y.wind_gain;
+        }
+    }
+
+    Simulation& sim_;
+    ParticleState& s_;
+    const Model& m_;
+    const RoomBounds room_;
+    RangeOutput& out_;
+    const bool adaptive_on_;
+    AdaptiveStats adaptive_;
+    std::uint64_t contact_solves_ = 0;
+    F f_;
+    const StepContext ctx_;
+    const ParticleStepper<F> stepper_;
+    const double t0_, h_;
+};
+
+// Adds a range's counters and warnings to the simulation (events are already in place).
+void merge(Simulation& sim, const RangeOutput& out) {
+    ForceCounters& c = sim.mutable_counters();
+    c.gravity += out.counters.gravity;
+    c.drag += out.counters.drag;
+    c.wind += out.counters.wind;
+    c.accepted_steps += out.counters.accepted_steps;
+    c.rejected_steps += out.counters.rejected_steps;
+    c.contacts += out.counters.contacts;
+    c.fast_path += out.counters.fast_path;
+    for (const std::uint32_t i : out.frozen)
+        sim.raise(WarningKind::frozen, i,
+                  fmt::format("particle {} frozen at t = {:.6g} s: its state became non-finite (NaN/Inf) "
+                              "during the step; last finite state kept",
+                              i, sim.time()));
+}
+
+// First particle of range k of `ranges`; boundaries on multiples of 64 particles keep the
+// threads' stores off each other's cache lines.
+std::size_t range_begin(std::size_t n, std::size_t ranges, std::size_t k) {
+    if (k >= ranges) return n;
+    return (n * k / ranges) & ~std::size_t{63};
+}
+
+template <Flight M, DragModel Drag, bool HasWind>
+void fast_step_kernel(Simulation& sim) {
+    const std::size_t n = sim.particle_count();
+    const std::size_t ranges = particle_ranges(n, sim.threads());
+    if (ranges <= 1) {
+        RangeOutput out;
+        out.events = &sim.event_sink();
+        RangeStepper<M, Drag, HasWind>(sim, out).run(0, n);
+        merge(sim, out);
+        return;
+    }
+    std::vector<RangeOutput> outs(ranges);
+    auto task = [&](std::size_t k) {
+        RangeOutput& out = outs[k];
+        out.events = &out.own_events;
+        RangeStepper<M, Drag, HasWind>(sim, out).run(range_begin(n, ranges, k), range_begin(n, ranges, k + 1));
+    };
+    ThreadPool::shared().run(ranges, std::min(ranges, thread_count(sim.threads())), task);
+    std::vector<Event>& sink = sim.event_sink();
+    for (const RangeOutput& out : outs) {
+        sink.insert(sink.end(), out.own_events.begin(), out.own_events.end());
+        merge(sim, out);
+    }
+}
+
+template <Flight M>
+StepKernel pick_forces(const Model& m) {
+    // Wind acts only through drag: without drag the wind field is never consulted.
+    const bool wind = m.world.wind.kind != WindKind::none && m.drag.model != DragModel::none;
+    switch (m.drag.model) {
+        case DragModel::none: return &fast_step_kernel<M, DragModel::none, false>;
+        case DragModel::linear:
+            return wind ? &fast_step_kernel<M, DragModel::linear, true> : &fast_step_kernel<M, DragModel::linear, false>;
+        case DragModel::quadratic:
+            return wind ? &fast_step_kernel<M, DragModel::quadratic, true>
+                        : &fast_step_kernel<M, DragModel::quadratic, false>;
+        case DragModel::sphere_re:
+            return wind ? &fast_step_kernel<M, DragModel::sphere_re, true>
+                        : &fast_step_kernel<M, DragModel::sphere_re, false>;
+    }
+    return &fast_step_kernel<M, DragModel::none, false>;
+}
+
+}  // namespace
+
+bool has_fast_flight(const Model& m) {
+    switch (m.integrator.method) {
+        case Method::explicit_euler:
+        case Method::semi_implicit_euler:
+        case Method::velocity_verlet:
+        case Method::rk4: return true;
+        case Method::dopri5:
+        case Method::exponential: return false;
+    }
+    return false;
+}
+
+StepKernel pick_fast_kernel(const Model& m) {
+    switch (m.integrator.method) {
+        case Method::explicit_euler: return pick_forces<Flight::explicit_euler>(m);
+        case Method::semi_implicit_euler: return pick_forces<Flight::semi_implicit_euler>(m);
+        case Method::velocity_verlet: return pick_forces<Flight::velocity_verlet>(m);
+        case Method::rk4: return pick_forces<Flight::rk4>(m);
+        case Method::dopri5:
+        case Method::exponential: return pick_forces<Flight::none>(m);
+    }
+    return pick_forces<Flight::none>(m);
+}
+
+std::size_t thread_count(int threads) { return static_cast<std::size_t>(threads > 0 ? threads : hardware_threads()); }
+
+std::size_t particle_ranges(std::size_t n, int threads) {
+    const std::size_t t = thread_count(threads);
+    if (t <= 1) return 1;
+    return std::max<std::size_t>(1, std::min(t * ranges_per_thread, n / min_particles_per_range));
+}
+
+}  // namespace pl

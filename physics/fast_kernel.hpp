@@ -1,0 +1,42 @@
+// The production stepping kernel. Bit-identical to the generic one (simulation.cpp), faster:
+//  * threads: the particles are split into contiguous ranges run on the shared ThreadPool; each
+//    range collects its own events, which are appended in range order, so events, ledger and
+//    state are the same for any thread count. There are a few ranges per thread, taken in turn
+//    by whichever thread is free, so a thread the OS delays does not hold up the step;
+//  * within a range, chunks of `fast_chunk` particles in two phases:
+//    1. flight: a branch-free loop over the structure-of-arrays state runs the scene's fixed-step
+//       method (the same integrators.hpp and forces.hpp code the generic path runs, so the same
+//       floating-point operations in the same order) and keeps the result only where the
+//       particle was free (not resting, not frozen), ends the step inside every wall and stays
+//       finite; otherwise the state is left untouched and the particle is flagged. Selects,
+//       not branches, so it vectorises when the forces do (no wind, drag none/linear/quadratic);
+//    2. contact: flagged particles are re-stepped from their untouched state by the generic
+//       ParticleStepper (time of impact, resting contact, events, energy ledger, freezing).
+//    Methods without a fixed-step flight phase (adaptive Dormand-Prince, exponential) and the
+//    sphere correlation take phase 2 for every particle, still split across threads.
+#pragma once
+
+#include "simulation.hpp"
+
+#include <cstddef>
+
+namespace pl {
+
+constexpr std::size_t fast_chunk = 256;
+// Fewer particles than this per range are not worth a hand-over to another thread.
+constexpr std::size_t min_particles_per_range = 1024;
+constexpr std::size_t ranges_per_thread = 4;
+
+// The kernel for the model's force terms and method (never null).
+StepKernel pick_fast_kernel(const Model& model);
+
+// Threads a `threads` setting means (0 = all hardware threads).
+std::size_t thread_count(int threads);
+// Number of contiguous particle ranges a step of n particles is split into for a `threads`
+// setting: 1 on one thread or below 2 * min_particles_per_range particles.
+std::size_t particle_ranges(std::size_t n, int threads);
+
+// Whether the model's method and drag run the vectorised flight phase (phase 1) at all.
+bool has_fast_flight(const Model& model);
+
+}  // namespace pl

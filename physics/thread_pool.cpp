@@ -1,0 +1,104 @@
+#include "thread_pool.hpp"
+
+#include <algorithm>
+
+namespace pl {
+
+namespace {
+
+// Spins briefly before sleeping: a simulation hands out a job every step (tens of
+// microseconds apart for in-cache scenes), and a futex wake-up costs about as much.
+constexpr int spin_iterations = 1 << 14;
+
+void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#else
+    std::this_thread::yield();
+#endif
+}
+
+// Returns once `a` no longer holds `old`.
+void wait_for_change(const std::atomic<std::uint64_t>& a, std::uint64_t old) {
+    for (int i = 0; i < spin_iterations; ++i) {
+        if (a.load(std::memory_order_acquire) != old) return;
+        cpu_relax();
+    }
+    while (a.load(std::memory_order_acquire) == old) a.wait(old, std::memory_order_acquire);
+}
+
+}  // namespace
+
+int hardware_threads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
+ThreadPool& ThreadPool::shared() {
+    static ThreadPool pool;
+    return pool;
+}
+
+ThreadPool::~ThreadPool() {
+    const std::lock_guard lock(submit_);
+    for (auto& slot : slots_) {
+        slot->stop = true;
+        slot->go.fetch_add(1, std::memory_order_release);
+        slot->go.notify_one();
+    }
+    for (std::thread& t : workers_) t.join();
+}
+
+void ThreadPool::grow(std::size_t workers) {
+    while (workers_.size() < workers) {
+        slots_.push_back(std::make_unique<Slot>());
+        Slot& slot = *slots_.back();
+        workers_.emplace_back([&slot] { worker_loop(slot); });
+    }
+}
+
+void ThreadPool::work(Job& job) {
+    for (std::size_t k = job.next.fetch_add(1, std::memory_order_relaxed); k < job.tasks;
+         k = job.next.fetch_add(1, std::memory_order_relaxed))
+        job.fn(job.ctx, k);
+}
+
+void ThreadPool::worker_loop(Slot& slot) {
+    std::uint64_t seen = 0;
+    for (;;) {
+        wait_for_change(slot.go, seen);
+        seen = slot.go.load(std::memory_order_acquire);
+        if (slot.stop) return;
+        work(*slot.job);
+        slot.done.store(seen, std::memory_order_release);
+        slot.done.notify_one();
+    }
+}
+
+void ThreadPool::run_erased(std::size_t tasks, std::size_t threads, TaskFn fn, void* ctx) {
+    if (tasks == 0) return;
+    const std::size_t helpers = std::min(tasks, threads) > 1 ? std::min(tasks, threads) - 1 : 0;
+    std::unique_lock lock(submit_, std::defer_lock);
+    if (helpers == 0 || !lock.try_lock()) {
+        for (std::size_t k = 0; k < tasks; ++k) fn(ctx, k);
+        return;
+    }
+    grow(helpers);
+    Job job;
+    job.fn = fn;
+    job.ctx = ctx;
+    job.tasks = tasks;
+    for (std::size_t w = 0; w < helpers; ++w) {
+        Slot& slot = *slots_[w];
+        slot.job = &job;
+        slot.go.fetch_add(1, std::memory_order_release);
+        slot.go.notify_one();
+    }
+    work(job);
+    for (std::size_t w = 0; w < helpers; ++w) {
+        Slot& slot = *slots_[w];
+        const std::uint64_t handed = slot.go.load(std::memory_order_relaxed);
+        for (std::uint64_t d = slot.done.load(std::memory_order_acquire); d != handed;
+             d = slot.done.load(std::memory_order_acquire))
+            wait_for_change(slot.done, d);
+    }
+}
+
+}  // namespace pl

@@ -1,0 +1,68 @@
+// A small persistent pool of worker threads for data-parallel loops over particles.
+// The calling thread takes part in the work, so a job of one task never touches another thread.
+// Which thread runs which task is not fixed; callers make results independent of it by giving
+// every task its own output (the kernels split particles into contiguous ranges).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace pl {
+
+class ThreadPool {
+public:
+    ThreadPool() = default;
+    ~ThreadPool();
+    ThreadPool(const ThreadPool&) = delete;
+    ThreadPool& operator=(const ThreadPool&) = delete;
+
+    // The process-wide pool the simulation kernels share (workers are created on first use).
+    static ThreadPool& shared();
+
+    // Runs task(k) once for every k in [0, tasks), spread over the calling thread and up to
+    // `threads - 1` workers; returns when every task has finished. Tasks must not throw.
+    // When another caller is using the pool (e.g. a background study), the tasks run on the
+    // calling thread instead: slower, never a deadlock, and the same results.
+    template <class Task>
+    void run(std::size_t tasks, std::size_t threads, Task& task) {
+        run_erased(tasks, threads, [](void* t, std::size_t k) { (*static_cast<Task*>(t))(k); }, &task);
+    }
+
+    std::size_t worker_count() const { return workers_.size(); }
+
+private:
+    using TaskFn = void (*)(void*, std::size_t);
+    struct Job {
+        TaskFn fn = nullptr;
+        void* ctx = nullptr;
+        std::size_t tasks = 0;
+        std::atomic<std::size_t> next{0};
+    };
+    // One per worker: the caller hands a job over by bumping `go`, the worker answers by
+    // setting `done` to the same number. A worker only ever looks at its own slot, and the
+    // caller does not reuse a slot before it is answered, so no job is seen twice or late.
+    struct Slot {
+        std::atomic<std::uint64_t> go{0}, done{0};
+        Job* job = nullptr;
+        bool stop = false;
+    };
+
+    void run_erased(std::size_t tasks, std::size_t threads, TaskFn fn, void* ctx);
+    void grow(std::size_t workers);
+    static void work(Job& job);
+    static void worker_loop(Slot& slot);
+
+    std::mutex submit_;  // one job at a time
+    std::vector<std::unique_ptr<Slot>> slots_;
+    std::vector<std::thread> workers_;
+};
+
+// Threads a simulation uses when its setting is 0: all hardware threads (at least 1).
+int hardware_threads();
+
+}  // namespace pl

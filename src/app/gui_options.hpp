@@ -1,0 +1,27 @@
+// Command line of the GUI: particle-lab [PRESET] [--frames N] [--screenshot out.png]
+// [--dump-state path] [--time-scale S] [--fixed-frame-dt SECONDS].
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace pl::app {
+
+struct GuiOptions {
+    std::filesystem::path preset;             // default: presets/default.json
+    std::optional<long> frames;               // exit after this many frames
+    std::optional<std::filesystem::path> screenshot;  // PNG of the last frame
+    std::optional<std::filesystem::path> dump_state;  // JSON state at exit (and on SIGUSR1)
+    std::optional<double> time_scale;         // simulated seconds per real second
+    std::optional<double> fixed_frame_dt;     // every frame advances by this real time (tests)
+};
+
+struct ParsedGuiOptions {
+    std::optional<GuiOptions> options;  // absent: exit with exit_code (help shown or bad input)
+    int exit_code = 0;
+};
+
+ParsedGuiOptions parse_gui_options(int argc, char** argv);
+
+}  // namespace pl::app

@@ -1,0 +1,23 @@
+// Key presses collected from GLFW between frames. A press and its release can both arrive
+// within one frame (e.g. xdotool), so keys are queued from the callback rather than polled.
+#pragma once
+
+#include <vector>
+
+struct GLFWwindow;
+
+namespace pl::app {
+
+struct KeyPress {
+    int key = 0;   // GLFW_KEY_*
+    int mods = 0;  // GLFW_MOD_*
+};
+
+struct InputQueue {
+    std::vector<KeyPress> keys;
+};
+
+// Install before ImGui's GLFW backend so it chains to this callback.
+void install_key_queue(GLFWwindow* window, InputQueue* queue);
+
+}  // namespace pl::app

@@ -1,0 +1,24 @@
+// Velocity arrows on the particles and the wind field on a grid, as line segments.
+#pragma once
+
+#include "app/renderer_lines.hpp"
+#include "physics/experiment.hpp"
+
+#include <optional>
+
+namespace pl::app {
+
+// An arrow from `from` to `to` with a two-stroke head in the plane facing `view_dir`.
+void append_arrow(LineSegments& out, glm::vec3 from, glm::vec3 to, glm::vec4 color, glm::vec3 view_dir);
+
+// Arrow length = distance covered in this time at the arrow's speed.
+constexpr float velocity_arrow_time_s = 0.1f;
+constexpr float wind_arrow_time_s = 0.25f;
+constexpr std::size_t max_velocity_arrows_per_variant = 256;
+
+void append_velocity_arrows(const Experiment& e, std::optional<std::size_t> only_variant, glm::vec3 view_dir,
+                            LineSegments& out);
+// The wind of `variant` at the current time on a 6 x 4 x 6 grid filling the room.
+void append_wind_arrows(const Experiment& e, std::size_t variant, glm::vec3 view_dir, LineSegments& out);
+
+}  // namespace pl::app

@@ -1,0 +1,32 @@
+#include "app/renderer_trails.hpp"
+
+#include <cmath>
+
+namespace pl::app {
+
+void append_trails(const TrailHistory& history, const Experiment& e, std::optional<std::size_t> only_variant,
+                   std::size_t selected_particle, LineSegments& out) {
+    const std::size_t variants = e.variant_count();
+    for (const Trail& trail : history.trails()) {
+        if (only_variant && trail.variant != *only_variant) continue;
+        if (trail.variant >= variants || trail.particle >= e.run(trail.variant).particle_count()) continue;
+        if (trail.particle >= TrailHistory::tracked_per_variant && trail.particle != selected_particle) continue;
+        if (trail.count < 2) continue;
+        const ui::Rgb rgb = ui::series_color(variants, trail.variant, trail.particle);
+        auto color = [&](std::size_t k) {
+            // Fades over the ring's full length (a fixed span of simulated time), so a young
+            // trail is drawn strong throughout and an old one melts into the room.
+            const float age = static_cast<float>(trail.count - 1 - k) / static_cast<float>(TrailHistory::capacity);
+            const float alpha = 0.9f * std::pow(1.0f - age, 1.5f);
+            return glm::vec4(rgb.r, rgb.g, rgb.b, alpha);
+        };
+        for (std::size_t k = 0; k + 1 < trail.count; ++k)
+            add_segment(out, trail.at(k), trail.at(k + 1), color(k), color(k + 1));
+        // Close the gap between the last sample and where the particle is now.
+        const glm::vec3 now(e.run(trail.variant).state().position(trail.particle));
+        const glm::vec4 c = color(trail.count - 1);
+        add_segment(out, trail.at(trail.count - 1), now, c, c);
+    }
+}
+
+}  // namespace pl::app

@@ -1,0 +1,18 @@
+// Performs the requests the panels and keys raised (reset, single step, run to the next event,
+// launch again) at a safe point of the frame, before physics stepping.
+#pragma once
+
+#include "ui/lab_session.hpp"
+
+#include <functional>
+
+namespace pl::app {
+
+struct RequestOutcome {
+    bool state_jumped = false;  // positions changed discontinuously (trails must restart)
+};
+
+// `after_step` runs after every base step taken here (trail sampling).
+RequestOutcome perform_state_requests(ui::LabSession& session, const std::function<void()>& after_step);
+
+}  // namespace pl::app

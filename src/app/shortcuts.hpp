@@ -1,0 +1,24 @@
+// The lab's keys (when no text field has the keyboard): space play/pause, R reset, N single
+// step, L launch again, F1/H help, Esc closes popups, Ctrl+Q quit; 1/2/3 views along x/y/z
+// (Shift: from the other side), 0 reset view, F focus the selected particle.
+#pragma once
+
+#include "app/input_events.hpp"
+#include "ui/lab_session.hpp"
+
+#include <optional>
+
+namespace pl::app {
+
+struct ViewCommand {
+    std::optional<int> axis;  // look along this world axis
+    bool from_negative = false;
+    bool reset = false;
+    bool focus_selected = false;
+};
+
+// Applies session-level keys to `session`; returns the camera commands.
+ViewCommand apply_shortcuts(const std::vector<KeyPress>& keys, bool text_input_active, bool keyboard_captured,
+                            ui::LabSession& session);
+
+}  // namespace pl::app

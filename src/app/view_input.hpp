@@ -1,0 +1,32 @@
+// Mouse and keyboard on the 3D view: left-drag orbits, right/middle-drag (or Shift+left) pans,
+// the wheel zooms, a click selects the particle under the cursor; WASD + Q/E fly the camera and
+// the arrow keys orbit it. The mouse acts only over the view, never through a panel.
+#pragma once
+
+#include "app/camera.hpp"
+#include "app/view_overlay.hpp"
+#include "app/view_panes.hpp"
+#include "ui/lab_session.hpp"
+
+#include <optional>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace pl::app {
+
+struct ViewDrag {
+    int button = -1;        // mouse button held since a press over the view, -1 none
+    float press_x = 0, press_y = 0;
+    bool moved = false;     // beyond the click tolerance: a drag, not a click
+};
+
+// Updates the camera from the mouse; returns the particle under the cursor, and selects it in
+// `session` on a click.
+std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& camera, const std::vector<ViewPane>& panes,
+                                                 ui::LabSession& session);
+
+// Held keys move the camera (call once per frame with the real frame time).
+void handle_view_keys(GLFWwindow* window, OrbitCamera& camera, float real_dt);
+
+}  // namespace pl::app

@@ -1,0 +1,82 @@
+#include "app/view_toolbar.hpp"
+
+#include "app/renderer_arrows.hpp"
+
+#include <imgui.h>
+
+#include <cstdio>
+
+namespace pl::app {
+
+namespace {
+
+// A button that stays lit while `on`.
+bool toggle_button(const char* label, bool& on, const char* tooltip) {
+    const ImVec4 lit(0.24f, 0.42f, 0.64f, 1.0f);
+    if (on) {
+        ImGui::PushStyleColor(ImGuiCol_Button, lit);
+        ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImVec4(lit.x + 0.05f, lit.y + 0.06f, lit.z + 0.07f, 1.0f));
+    }
+    const bool pressed = ImGui::Button(label);
+    if (on) ImGui::PopStyleColor(2);
+    if (pressed) on = !on;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+    return pressed;
+}
+
+bool view_button(const char* label, const char* tooltip) {
+    const bool pressed = ImGui::Button(label);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+    return pressed;
+}
+
+// Why the wind arrows show nothing or do nothing, if so.
+const char* wind_note(const Experiment& e) {
+    bool any_wind = false, any_effect = false;
+    for (const Simulation& run : e.runs()) {
+        const bool wind = run.model().world.wind.kind != WindKind::none;
+        any_wind = any_wind || wind;
+        any_effect = any_effect || (wind && run.model().drag.model != DragModel::none);
+    }
+    if (!any_wind) return "\nThis scene has no wind.";
+    if (!any_effect) return "\nDrag is off, so the wind has no effect on the particles.";
+    return "";
+}
+
+}  // namespace
+
+ViewCommand draw_view_toolbar(ui::LabSession& s) {
+    ViewCommand cmd;
+    char tip[256];
+    toggle_button("Trails", s.show_trails, "Fading trails of the first particles of each variant and the selected one");
+    ImGui::SameLine();
+    std::snprintf(tip, sizeof tip, "Velocity arrows: each shows the distance covered in %.2g s", velocity_arrow_time_s);
+    toggle_button("Velocity", s.show_velocity, tip);
+    ImGui::SameLine();
+    std::snprintf(tip, sizeof tip, "Wind field on a grid: each arrow shows the air's travel in %.2g s%s", wind_arrow_time_s,
+                  s.experiment ? wind_note(*s.experiment) : "");
+    toggle_button("Wind", s.show_wind, tip);
+    ImGui::SameLine();
+    const bool single = !s.experiment || s.experiment->variant_count() < 2;
+    ImGui::BeginDisabled(single);
+    toggle_button("Split", s.split_view, "One pane per variant (up to four), same camera");
+    ImGui::EndDisabled();
+    if (single && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Split view needs a preset with several variants");
+
+    ImGui::SameLine(0.0f, 18.0f);
+    ImGui::TextDisabled("View");
+    ImGui::SameLine();
+    if (view_button("X", "Look along the x axis (key 1; Shift+1 from the other side)")) cmd.axis = 0;
+    ImGui::SameLine();
+    if (view_button("Y", "Look down the y axis: top view (key 2; Shift+2 from below)")) cmd.axis = 1;
+    ImGui::SameLine();
+    if (view_button("Z", "Look along the z axis: front view (key 3; Shift+3 from behind)")) cmd.axis = 2;
+    ImGui::SameLine();
+    if (view_button("Reset", "Frame the whole room (key 0)")) cmd.reset = true;
+    ImGui::SameLine();
+    if (view_button("Focus", "Centre the view on the selected particle (key F)")) cmd.focus_selected = true;
+    return cmd;
+}
+
+}  // namespace pl::app

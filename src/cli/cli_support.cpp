@@ -1,0 +1,175 @@
+#include "cli/cli_support.hpp"
+
+#include "physics/preset_io.hpp"
+
+#include <fmt/format.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace pl::cli {
+
+void print_error(const std::string& command, const std::string& message) {
+    std::fprintf(stderr, "particle-lab %s: %s\n", command.c_str(), message.c_str());
+}
+
+std::optional<Scene> load_scene(const std::string& command, const std::string& path) {
+    LoadResult r = load_preset(path);
+    if (r.ok()) return std::move(r.scene);
+    if (r.errors.size() == 1 && r.errors.front().path.empty()) {  // the file itself: missing, unreadable, ...
+        print_error(command, r.errors.front().message);
+        return std::nullopt;
+    }
+    print_error(command, fmt::format("{}: not a valid preset ({} error{}):", path, r.errors.size(),
+                                     r.errors.size() == 1 ? "" : "s"));
+    const std::string text = r.error_text();
+    std::fprintf(stderr, "%s%s", text.c_str(), !text.empty() && text.back() != '\n' ? "\n" : "");
+    return std::nullopt;
+}
+
+std::string variant_name(const Scene& scene, std::size_t variant) {
+    if (scene.variants.empty() || scene.variants[variant].label.empty()) return std::to_string(variant);
+    return scene.variants[variant].label;
+}
+
+Progress::Progress(std::string what) : what_(std::move(what)), enabled_(isatty(STDERR_FILENO) == 1) {}
+
+Progress::~Progress() { done(); }
+
+void Progress::update(double fraction) {
+    if (!enabled_) return;
+    const std::lock_guard lock(mutex_);
+    const int percent = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 100.0);
+    if (percent == last_percent_) return;
+    last_percent_ = percent;
+    std::fprintf(stderr, "\r%s: %3d%%", what_.c_str(), percent);
+    std::fflush(stderr);
+}
+
+void Progress::done() {
+    const std::lock_guard lock(mutex_);
+    if (!enabled_ || last_percent_ < 0) return;
+    std::fprintf(stderr, "\r%*s\r", static_cast<int>(what_.size()) + 8, "");
+    std::fflush(stderr);
+    last_percent_ = -1;
+}
+
+void Table::print(std::FILE* out) const {
+    std::vector<std::size_t> width(header.size(), 0);
+    auto measure = [&](const std::vector<std::string>& row) {
+        for (std::size_t c = 0; c < row.size() && c < width.size(); ++c) width[c] = std::max(width[c], row[c].size());
+    };
+    measure(header);
+    for (const auto& row : rows) measure(row);
+    auto line = [&](const std::vector<std::string>& row) {
+        std::string s;
+        for (std::size_t c = 0; c < width.size(); ++c) {
+            const std::string cell = c < row.size() ? row[c] : "";
+            const std::string pad(width[c] - std::min(width[c], cell.size()), ' ');
+            if (c > 0) s += "  ";
+            s += c == 0 ? cell + pad : pad + cell;
+        }
+        while (!s.empty() && s.back() == ' ') s.pop_back();
+        std::fprintf(out, "%s\n", s.c_str());
+    };
+    line(header);
+    std::size_t total = 0;
+    for (std::size_t w : width) total += w;
+    std::fprintf(out, "%s\n", std::string(total + 2 * (width.empty() ? 0 : width.size() - 1), '-').c_str());
+    for (const auto& row : rows) line(row);
+}
+
+std::string sig(double value, int digits) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    return fmt::format("{:.{}g}", value, digits);
+}
+
+std::string sig(const std::optional<double>& value, int digits) { return value ? sig(*value, digits) : "-"; }
+
+CLI::Validator positive_number() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            double v = 0.0;
+            const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+            if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v) || v <= 0.0)
+                return fmt::format("must be a number > 0, got '{}'", text);
+            return "";
+        },
+        "NUMBER>0");
+}
+
+CLI::Validator positive_integer() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            unsigned long long v = 0;
+            const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+            if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || v == 0)
+                return fmt::format("must be a whole number >= 1, got '{}'", text);
+            return "";
+        },
+        "INTEGER>=1");
+}
+
+std::optional<std::size_t> find_variant(const Scene& scene, const std::string& text) {
+    for (std::size_t v = 0; v < variant_count(scene); ++v)
+        if (variant_name(scene, v) == text) return v;
+    std::size_t index = 0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), index);
+    if (!text.empty() && r.ec == std::errc() && r.ptr == text.data() + text.size() && index < variant_count(scene))
+        return index;
+    return std::nullopt;
+}
+
+std::string variant_list(const Scene& scene) {
+    std::string names;
+    for (std::size_t v = 0; v < variant_count(scene); ++v) names += (v ? ", '" : "'") + variant_name(scene, v) + "'";
+    return names;
+}
+
+namespace {
+std::vector<std::string> split_commas(const std::string& text) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = text.find(',', start);
+        std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const auto first = item.find_first_not_of(" \t");
+        const auto last = item.find_last_not_of(" \t");
+        items.push_back(first == std::string::npos ? "" : item.substr(first, last - first + 1));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return items;
+}
+}  // namespace
+
+std::string parse_double_list(const std::string& option, const std::string& text, std::vector<double>& out) {
+    out.clear();
+    for (const std::string& item : split_commas(text)) {
+        double v = 0.0;
+        const auto r = std::from_chars(item.data(), item.data() + item.size(), v);
+        if (item.empty() || r.ec != std::errc() || r.ptr != item.data() + item.size() || !std::isfinite(v) || v <= 0.0)
+            return fmt::format("{}: expected a comma-separated list of numbers > 0, got '{}' in '{}'", option, item, text);
+        out.push_back(v);
+    }
+    return "";
+}
+
+std::string parse_method_list(const std::string& option, const std::string& text, std::vector<Method>& out) {
+    out.clear();
+    for (const std::string& item : split_commas(text)) {
+        const std::optional<Method> m = method_from_string(item);
+        if (!m)
+            return fmt::format("{}: unknown method '{}'; expected a comma-separated list of explicit_euler, "
+                               "semi_implicit_euler, velocity_verlet, rk4, dopri5, exponential",
+                               option, item);
+        out.push_back(*m);
+    }
+    return "";
+}
+
+}  // namespace pl::cli

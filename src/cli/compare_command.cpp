@@ -1,0 +1,180 @@
+// particle-lab compare: one metrics row per variant, and the difference to a baseline variant.
+#include "cli/cli_support.hpp"
+
+#include "physics/metrics.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace pl::cli {
+
+namespace {
+
+struct CompareCliOptions {
+    std::string preset;
+    double duration_s = 5.0;
+    bool json = false;
+    std::string baseline;
+    std::size_t particle = 0;
+};
+
+using Json = nlohmann::ordered_json;
+
+Json optional_json(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
+
+Json particle_json(const ParticleMetrics& p) {
+    Json j;
+    j["time_of_flight_s"] = optional_json(p.first_impact_time);
+    j["first_impact_wall"] = p.first_impact_wall >= 0 ? Json(wall_name(p.first_impact_wall)) : Json(nullptr);
+    j["range_at_first_impact_m"] = optional_json(p.range_at_first_impact);
+    j["apex_height_m"] = p.apex_height;
+    j["apex_time_s"] = p.apex_time;
+    j["final_range_m"] = p.final_range;
+    j["bounces"] = p.bounces;
+    j["time_to_rest_s"] = optional_json(p.time_to_rest);
+    j["lost_to_drag_J"] = p.lost_drag;
+    j["lost_to_bounces_J"] = p.lost_bounce;
+    j["lost_to_friction_J"] = p.lost_friction;
+    j["wind_work_J"] = p.wind_work;
+    return j;
+}
+
+Json difference_json(const MetricsDifference& d) {
+    Json j;
+    j["time_of_flight_s"] = optional_json(d.first_impact_time);
+    j["range_at_first_impact_m"] = optional_json(d.range_at_first_impact);
+    j["apex_height_m"] = d.apex_height;
+    j["final_range_m"] = d.final_range;
+    j["bounces"] = d.bounces;
+    j["time_to_rest_s"] = optional_json(d.time_to_rest);
+    j["all_at_rest_s"] = optional_json(d.all_at_rest_time);
+    j["lost_to_drag_J"] = d.lost_drag;
+    j["lost_to_bounces_J"] = d.lost_bounce;
+    j["lost_to_friction_J"] = d.lost_friction;
+    j["cost_s_per_s"] = d.cost;
+    return j;
+}
+
+std::string signed_sig(const std::optional<double>& v) {
+    if (!v) return "-";
+    return (*v > 0 ? "+" : "") + sig(*v);
+}
+
+int compare(const CompareCliOptions& o) {
+    const std::optional<Scene> scene = load_scene("compare", o.preset);
+    if (!scene) return exit_bad_input;
+    const std::size_t particles = initial_particles(*scene).size();
+    if (o.particle >= particles) {
+        print_error("compare", fmt::format("--particle: must be < {} (the number of particles), got {}", particles, o.particle));
+        return exit_bad_input;
+    }
+    std::size_t baseline = 0;
+    if (!o.baseline.empty()) {
+        const std::optional<std::size_t> found = find_variant(*scene, o.baseline);
+        if (!found) {
+            print_error("compare", fmt::format("--baseline: no variant labelled or numbered '{}'; the variants are {}",
+                                               o.baseline, variant_list(*scene)));
+            return exit_bad_input;
+        }
+        baseline = *found;
+    }
+    Progress progress("compare");
+    CompareOptions options;
+    options.duration_s = o.duration_s;
+    options.progress = [&](double f) { progress.update(f); };
+    const Comparison c = run_comparison(*scene, options);
+    progress.done();
+    if (!c.error.empty()) {
+        print_error("compare", "--duration: " + c.error);
+        return exit_bad_input;
+    }
+    const VariantMetrics& base = c.variants[baseline];
+
+    if (o.json) {
+        Json j;
+        j["preset"] = scene->name;
+        j["duration_s"] = c.duration_s;
+        j["particle"] = o.particle;
+        j["baseline"] = variant_name(*scene, baseline);
+        j["notes"] = "'particle' metrics are for the selected particle; 'all_particles' sums the energy over every "
+                     "particle, and all_at_rest_s is the first time every particle is stopped";
+        Json variants = Json::array();
+        for (std::size_t v = 0; v < c.variants.size(); ++v) {
+            const VariantMetrics& m = c.variants[v];
+            Json jv;
+            jv["label"] = variant_name(*scene, v);
+            jv["particle"] = particle_json(m.particles[o.particle]);
+            Json all;
+            all["all_at_rest_s"] = optional_json(m.all_at_rest_time);
+            all["lost_to_drag_J"] = m.lost_drag;
+            all["lost_to_bounces_J"] = m.lost_bounce;
+            all["lost_to_friction_J"] = m.lost_friction;
+            all["wind_work_J"] = m.wind_work;
+            all["energy_residual_J"] = m.energy_residual;
+            jv["all_particles"] = all;
+            jv["steps"] = m.steps;
+            jv["physics_seconds"] = m.physics_seconds;
+            jv["cost_s_per_s"] = m.cost();
+            jv["difference_to_baseline"] = difference_json(metrics_difference(m, base, o.particle));
+            variants.push_back(jv);
+        }
+        j["variants"] = variants;
+        std::cout << j.dump(2) << "\n";
+        return exit_ok;
+    }
+
+    std::printf("%s: %g s, particle %zu of %zu (energy and 'all rest' over all particles); baseline '%s'\n\n",
+                scene->name.c_str(), c.duration_s, o.particle, particles, variant_name(*scene, baseline).c_str());
+    Table t;
+    t.header = {"variant", "flight s", "apex m", "range@1st m", "final range m", "bounces", "rest s",
+                "all rest s", "drag J", "bounce J", "friction J", "cost ms/s"};
+    for (std::size_t v = 0; v < c.variants.size(); ++v) {
+        const VariantMetrics& m = c.variants[v];
+        const ParticleMetrics& p = m.particles[o.particle];
+        t.rows.push_back({variant_name(*scene, v), sig(p.first_impact_time), sig(p.apex_height), sig(p.range_at_first_impact),
+                          sig(p.final_range), std::to_string(p.bounces), sig(p.time_to_rest), sig(m.all_at_rest_time),
+                          sig(m.lost_drag), sig(m.lost_bounce), sig(m.lost_friction), sig(m.cost() * 1e3, 3)});
+    }
+    t.print();
+    std::printf("\ndifference to '%s' (variant - baseline)\n", variant_name(*scene, baseline).c_str());
+    Table d;
+    d.header = {"variant", "flight s", "apex m", "range@1st m", "final range m", "bounces", "rest s", "drag J",
+                "bounce J", "friction J", "cost ms/s"};
+    for (std::size_t v = 0; v < c.variants.size(); ++v) {
+        const MetricsDifference x = metrics_difference(c.variants[v], base, o.particle);
+        d.rows.push_back({variant_name(*scene, v), signed_sig(x.first_impact_time), signed_sig(x.apex_height),
+                          signed_sig(x.range_at_first_impact), signed_sig(x.final_range),
+                          (x.bounces > 0 ? "+" : "") + std::to_string(x.bounces), signed_sig(x.time_to_rest),
+                          signed_sig(x.lost_drag), signed_sig(x.lost_bounce), signed_sig(x.lost_friction),
+                          signed_sig(x.cost * 1e3)});
+    }
+    d.print();
+    std::printf("\nflight: time to the first impact; range@1st: horizontal distance from the start to it; apex: highest\n"
+                "centre height over the floor; rest: time the particle stopped for good; cost: physics wall time per\n"
+                "simulated second.\n");
+    return exit_ok;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, int& exit_code) {
+    auto o = std::make_shared<CompareCliOptions>();
+    CLI::App* cmd = app.add_subcommand("compare", "one metrics row per variant, and the difference to a baseline");
+    cmd->footer(
+        "Compare the variants of a preset: per variant the time of flight to the first bounce, apex\n"
+        "height, range, bounces, time to rest, energy lost to drag/bounces/friction, cost (physics\n"
+        "time per simulated second) and the difference to a baseline variant.");
+    cmd->add_option("PRESET", o->preset, "preset JSON file")->required();
+    cmd->add_option("--duration", o->duration_s, "simulated seconds; a whole number of every variant's steps")
+        ->capture_default_str()
+        ->check(positive_number());
+    cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    cmd->add_option("--baseline", o->baseline, "label of the baseline variant (default: the first)");
+    cmd->add_option("--particle", o->particle, "particle whose trajectory metrics are shown")->capture_default_str();
+    cmd->callback([o, &exit_code] { exit_code = compare(*o); });
+}
+
+}  // namespace pl::cli

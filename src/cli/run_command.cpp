@@ -1,0 +1,189 @@
+// particle-lab run: every variant in lockstep; trajectory and events CSV, or a summary.
+#include "cli/cli_support.hpp"
+
+#include "physics/csv_writer.hpp"
+#include "physics/energy.hpp"
+#include "physics/metrics.hpp"
+#include "physics/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <fstream>
+#include <memory>
+
+namespace pl::cli {
+
+namespace {
+
+struct RunOptions {
+    std::string preset;
+    double duration_s = 5.0;
+    std::string out, events;
+    std::uint64_t every = 1;
+};
+
+void write_state_rows(CsvWriter& csv, const Simulation& sim, const std::string& variant, double t) {
+    const ParticleState& s = sim.state();
+    const double floor_y = sim.model().room.floor_y();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const Vec3 v = s.velocity(i);
+        csv.field(t).field(variant).field(static_cast<std::uint64_t>(i));
+        csv.field(s.x[i]).field(s.y[i]).field(s.z[i]).field(v.x).field(v.y).field(v.z);
+        csv.field(glm::length(v)).field(s.y[i] - floor_y).field(kinetic_energy(s.mass[i], v));
+        csv.end_row();
+    }
+}
+
+void write_event_rows(CsvWriter& csv, const std::vector<Event>& events, const std::string& variant) {
+    for (const Event& e : events) {
+        csv.field(e.t).field(variant).field(static_cast<std::uint64_t>(e.particle));
+        csv.field(e.wall >= 0 ? wall_name(e.wall) : "");
+        csv.field(e.speed_in).field(e.speed_out).field(to_string(e.kind));
+        csv.end_row();
+    }
+}
+
+void print_summary(const Scene& scene, const std::vector<Simulation>& sims, const std::vector<std::array<std::uint64_t, 5>>& event_counts) {
+    std::printf("%s: %zu particle%s, %zu variant%s\n", scene.name.c_str(), sims.front().particle_count(),
+                sims.front().particle_count() == 1 ? "" : "s", sims.size(), sims.size() == 1 ? "" : "s");
+    for (std::size_t v = 0; v < sims.size(); ++v) {
+        const Simulation& sim = sims[v];
+        const Model& m = sim.model();
+        const EnergyBreakdown e = total_energy(sim.state(), m.world.gravity, m.room);
+        const auto& n = event_counts[v];
+        std::printf("\nvariant %s  (%s, dt = %s s, drag %s, wind %s)\n", variant_name(scene, v).c_str(),
+                    to_string(m.integrator.method), sig(m.integrator.dt, 6).c_str(), to_string(m.drag.model),
+                    to_string(m.world.wind.kind));
+        std::printf("  time %s s, %llu steps\n", sig(sim.time(), 10).c_str(), static_cast<unsigned long long>(sim.step_count()));
+        std::printf("  events: %llu bounce, %llu rest, %llu stop, %llu lift, %llu frozen\n",
+                    static_cast<unsigned long long>(n[0]), static_cast<unsigned long long>(n[1]),
+                    static_cast<unsigned long long>(n[2]), static_cast<unsigned long long>(n[3]),
+                    static_cast<unsigned long long>(n[4]));
+        std::printf("  energy (J, all particles): initial %s = kinetic %s + potential %s\n"
+                    "    + dissipated by bounces %s, friction %s, drag %s - wind work %s + residual %s\n",
+                    sig(e.initial, 8).c_str(), sig(e.kinetic, 8).c_str(), sig(e.potential, 8).c_str(),
+                    sig(e.dissipated_bounce, 8).c_str(), sig(e.dissipated_friction, 8).c_str(),
+                    sig(e.dissipated_drag, 8).c_str(), sig(e.wind_work, 8).c_str(), sig(e.residual(), 3).c_str());
+        const ForceCounters& c = sim.counters();
+        std::printf("  force evaluations: gravity %llu, drag %llu, wind %llu; time-of-impact solves %llu",
+                    static_cast<unsigned long long>(c.gravity), static_cast<unsigned long long>(c.drag),
+                    static_cast<unsigned long long>(c.wind), static_cast<unsigned long long>(c.contacts));
+        if (m.integrator.method == Method::dopri5 && m.integrator.adaptive)
+            std::printf("; dopri5 internal steps %llu accepted, %llu rejected",
+                        static_cast<unsigned long long>(c.accepted_steps), static_cast<unsigned long long>(c.rejected_steps));
+        std::printf("\n");
+        for (const Warning& w : sim.warnings()) std::printf("  warning: %s\n", w.message.c_str());
+    }
+}
+
+int run(const RunOptions& o) {
+    const std::optional<Scene> scene = load_scene("run", o.preset);
+    if (!scene) return exit_bad_input;
+    const DurationPlan plan = plan_duration(*scene, o.duration_s);
+    if (!plan.error.empty()) {
+        print_error("run", "--duration: " + plan.error);
+        return exit_bad_input;
+    }
+    std::ofstream traj_file, events_file;
+    std::unique_ptr<CsvWriter> traj, events;
+    if (!o.out.empty()) {
+        traj_file.open(o.out, std::ios::binary);
+        if (!traj_file) {
+            print_error("run", fmt::format("--out: cannot open '{}' for writing", o.out));
+            return exit_runtime_failure;
+        }
+        traj = std::make_unique<CsvWriter>(traj_file);
+        for (const char* h : {"t", "variant", "particle", "x", "y", "z", "vx", "vy", "vz", "speed", "height", "kinetic_energy"})
+            traj->field(h);
+        traj->end_row();
+    }
+    if (!o.events.empty()) {
+        events_file.open(o.events, std::ios::binary);
+        if (!events_file) {
+            print_error("run", fmt::format("--events: cannot open '{}' for writing", o.events));
+            return exit_runtime_failure;
+        }
+        events = std::make_unique<CsvWriter>(events_file);
+        for (const char* h : {"t", "variant", "particle", "wall", "speed_in", "speed_out", "kind"}) events->field(h);
+        events->end_row();
+    }
+
+    const std::vector<ParticleSpec> particles = initial_particles(*scene);
+    std::vector<Simulation> sims;
+    std::vector<std::string> names;
+    for (std::size_t v = 0; v < variant_count(*scene); ++v) {
+        sims.emplace_back(model_for_variant(*scene, v), particles);
+        names.push_back(variant_name(*scene, v));
+    }
+    std::vector<std::uint64_t> written_step(sims.size(), 0);
+    std::vector<std::array<std::uint64_t, 5>> event_counts(sims.size(), {0, 0, 0, 0, 0});
+    if (traj)
+        for (std::size_t v = 0; v < sims.size(); ++v) write_state_rows(*traj, sims[v], names[v], 0.0);
+
+    Progress progress("run");
+    for (std::uint64_t k = 1; k <= plan.base_steps; ++k) {
+        const bool last = k == plan.base_steps;
+        const bool sample = last || k % o.every == 0;
+        for (std::size_t v = 0; v < sims.size(); ++v) {
+            if (catch_up(sims[v], static_cast<double>(k) * plan.base_dt) == 0 && !last) continue;
+            const std::vector<Event> new_events = sims[v].drain_events();
+            for (const Event& e : new_events) ++event_counts[v][static_cast<std::size_t>(e.kind)];
+            if (events) write_event_rows(*events, new_events, names[v]);
+            if (traj && sample && sims[v].step_count() != written_step[v]) {
+                // The last state is at exactly t = duration (plan_duration checked every dt divides it).
+                write_state_rows(*traj, sims[v], names[v], last ? o.duration_s : sims[v].time());
+                written_step[v] = sims[v].step_count();
+            }
+        }
+        if ((k & 255) == 0) progress.update(static_cast<double>(k) / static_cast<double>(plan.base_steps));
+    }
+    progress.done();
+    if (traj_file.is_open()) {
+        traj_file.close();
+        if (!traj_file) {
+            print_error("run", fmt::format("--out: writing '{}' failed", o.out));
+            return exit_runtime_failure;
+        }
+    }
+    if (events_file.is_open()) {
+        events_file.close();
+        if (!events_file) {
+            print_error("run", fmt::format("--events: writing '{}' failed", o.events));
+            return exit_runtime_failure;
+        }
+    }
+    if (o.out.empty()) {
+        print_summary(*scene, sims, event_counts);
+    } else {
+        for (const Simulation& sim : sims)
+            for (const Warning& w : sim.warnings())
+                std::fprintf(stderr, "particle-lab run: warning (%s): %s\n", sim.model().label.c_str(), w.message.c_str());
+    }
+    return exit_ok;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, int& exit_code) {
+    auto o = std::make_shared<RunOptions>();
+    CLI::App* cmd = app.add_subcommand("run", "run a preset headless; trajectory and events CSV, or a summary");
+    cmd->footer(
+        "Run a preset headless: every variant in lockstep for --duration seconds.\n"
+        "Writes the trajectory CSV (--out) and the events CSV (--events); without --out prints a\n"
+        "summary per variant: time, steps, events, energy ledger, force evaluations, warnings.");
+    cmd->add_option("PRESET", o->preset, "preset JSON file")->required();
+    cmd->add_option("--duration", o->duration_s, "simulated seconds; a whole number of every variant's steps")
+        ->capture_default_str()
+        ->check(positive_number());
+    cmd->add_option("--out", o->out,
+                    "trajectory CSV: t,variant,particle,x,y,z,vx,vy,vz,speed,height,kinetic_energy\n"
+                    "(initial state, every K-th step, final state at t = duration)");
+    cmd->add_option("--events", o->events, "events CSV: t,variant,particle,wall,speed_in,speed_out,kind");
+    cmd->add_option("--every", o->every, "write every K-th base step to --out")
+        ->capture_default_str()
+        ->check(positive_integer());
+    cmd->callback([o, &exit_code] { exit_code = run(*o); });
+}
+
+}  // namespace pl::cli

@@ -1,0 +1,203 @@
+// particle-lab stability: the extremes grid, classified cell by cell.
+#include "cli/cli_support.hpp"
+
+#include "physics/csv_writer.hpp"
+#include "physics/stability_study.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace pl::cli {
+
+namespace {
+
+struct StabilityCliOptions {
+    std::string preset;
+    bool csv = false, json = false, quick = false;
+    unsigned threads = 0;
+};
+
+using Json = nlohmann::ordered_json;
+
+char outcome_letter(StabilityOutcome o) {
+    switch (o) {
+        case StabilityOutcome::stable: return '.';
+        case StabilityOutcome::energy_growth: return 'E';
+        case StabilityOutcome::nan: return 'N';
+        case StabilityOutcome::escaped: return 'X';
+        case StabilityOutcome::jitter: return 'J';
+        case StabilityOutcome::tunnelled: return 'T';
+    }
+    return '?';
+}
+
+void cells_csv(CsvWriter& csv, const std::vector<StabilityCell>& cells, const char* slice) {
+    for (const StabilityCell& c : cells) {
+        csv.field(slice).field(to_string(c.c.method)).field(c.c.dt).field(c.c.stiffness).field(c.c.speed);
+        csv.field(c.c.restitution).field(c.c.radius_fraction).field(to_string(c.outcome)).field(c.steps);
+        csv.field(c.simulated_s).field(c.max_energy_ratio).field(c.jitter_checked ? "1" : "0").field(c.detail);
+        csv.end_row();
+    }
+}
+
+Json cell_json(const StabilityCell& c) {
+    Json j;
+    j["method"] = to_string(c.c.method);
+    j["dt"] = c.c.dt;
+    j["k"] = c.c.stiffness;
+    j["speed"] = c.c.speed;
+    j["restitution"] = c.c.restitution;
+    j["radius_fraction"] = c.c.radius_fraction;
+    j["outcome"] = to_string(c.outcome);
+    j["steps"] = c.steps;
+    j["simulated_s"] = c.simulated_s;
+    j["max_energy_ratio"] = c.max_energy_ratio;
+    j["jitter_checked"] = c.jitter_checked;
+    j["detail"] = c.detail;
+    return j;
+}
+
+Json optional_json(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
+
+void print_text(const StabilityReport& r, const StabilityGrid& g, const std::string& where) {
+    std::printf("stability study in %s\n", where.c_str());
+    std::printf("cells: one particle launched from the room's centre; k = linear drag stiffness b/m (1/s).\n"
+                "energy_growth: KE + PE above E0 by more than %g E0 (no energy source in these cells);\n"
+                "jitter: e < 1 but still bouncing on the floor after the time-to-rest bound.\n\n",
+                stability_energy_tolerance);
+    std::printf("largest stable dt: theory (method limit / k) beside the measured one (largest grid dt with every\n"
+                "smaller dt stable; map at speed %g m/s, e = %g, radius %g of the room)\n",
+                g.map_speed, g.map_restitution, g.map_radius_fraction);
+    Table t;
+    t.header = {"method", "k 1/s", "theory dt s", "measured dt s", "first unstable dt s"};
+    for (const StabilityLimit& l : r.limits)
+        t.rows.push_back({to_string(l.method), sig(l.stiffness, 3), std::isfinite(l.theoretical_dt) ? sig(l.theoretical_dt, 3) : "none",
+                          !l.measured_dt ? "< grid" : (l.first_unstable_dt ? "" : ">= ") + sig(*l.measured_dt, 3),
+                          sig(l.first_unstable_dt, 3)});
+    t.print();
+
+    std::printf("\nmaps (rows dt, columns k): . stable, E energy growth, N NaN, X escaped, J jitter, T tunnelled\n");
+    std::string header = fmt::format("{:>10}", "dt \\ k");
+    for (double k : g.stiffnesses) header += fmt::format(" {:>6}", sig(k, 2));
+    for (Method m : g.methods) {
+        std::printf("\n%s\n%s\n", to_string(m), header.c_str());
+        for (double dt : g.dts) {
+            std::string line = fmt::format("{:>10}", sig(dt, 3));
+            for (double k : g.stiffnesses) {
+                char letter = ' ';
+                for (const StabilityCell& c : r.map_cells)
+                    if (c.c.method == m && c.c.dt == dt && c.c.stiffness == k) letter = outcome_letter(c.outcome);
+                line += fmt::format(" {:>6}", letter);
+            }
+            std::printf("%s\n", line.c_str());
+        }
+    }
+
+    std::printf("\nsweep: dt x speed x restitution x radius at k in {");
+    for (std::size_t i = 0; i < g.sweep_stiffnesses.size(); ++i) std::printf("%s%g", i ? ", " : "", g.sweep_stiffnesses[i]);
+    std::printf("} 1/s: outcomes per method\n");
+    Table s;
+    s.header = {"method", "cells", "stable", "energy_growth", "nan", "escaped", "jitter", "tunnelled", "jitter checked"};
+    for (Method m : g.methods) {
+        std::array<int, 6> n{};
+        int cells = 0, checked = 0;
+        for (const StabilityCell& c : r.sweep_cells)
+            if (c.c.method == m) {
+                ++n[static_cast<std::size_t>(c.outcome)];
+                ++cells;
+                checked += c.jitter_checked ? 1 : 0;
+            }
+        s.rows.push_back({to_string(m), std::to_string(cells), std::to_string(n[0]), std::to_string(n[1]), std::to_string(n[2]),
+                          std::to_string(n[3]), std::to_string(n[4]), std::to_string(n[5]), std::to_string(checked)});
+    }
+    s.print();
+    std::printf("\nunstable sweep cells (first 5 per method; --csv lists every cell):\n");
+    for (Method m : g.methods) {
+        int shown = 0;
+        for (const StabilityCell& c : r.sweep_cells) {
+            if (c.c.method != m || c.outcome == StabilityOutcome::stable) continue;
+            if (shown++ == 5) break;
+            std::printf("  %s dt=%s k=%s speed=%s e=%s r=%s: %s (%s)\n", to_string(m), sig(c.c.dt, 3).c_str(),
+                        sig(c.c.stiffness, 3).c_str(), sig(c.c.speed, 3).c_str(), sig(c.c.restitution, 2).c_str(),
+                        sig(c.c.radius_fraction, 2).c_str(), to_string(c.outcome), c.detail.c_str());
+        }
+    }
+}
+
+int stability(const StabilityCliOptions& o) {
+    StabilityBase base = default_stability_base();
+    std::string where = "the seed's 2 m cube room (no preset given)";
+    if (!o.preset.empty()) {
+        const std::optional<Scene> scene = load_scene("stability", o.preset);
+        if (!scene) return exit_bad_input;
+        base = stability_base(*scene);
+        where = fmt::format("the room, gravity and contact of '{}'", scene->name);
+    }
+    StabilityOptions options;
+    options.grid = default_stability_grid(o.quick);
+    options.threads = o.threads;
+    Progress progress("stability");
+    options.progress = [&](double f) { progress.update(f); };
+    const StabilityReport r = run_stability_study(base, options);
+    progress.done();
+    if (o.csv) {
+        CsvWriter csv(std::cout);
+        for (const char* h : {"slice", "method", "dt", "k", "speed", "restitution", "radius_fraction", "outcome", "steps",
+                              "simulated_s", "max_energy_ratio", "jitter_checked", "detail"})
+            csv.field(h);
+        csv.end_row();
+        cells_csv(csv, r.map_cells, "map");
+        cells_csv(csv, r.sweep_cells, "sweep");
+    } else if (o.json) {
+        Json j;
+        j["energy_tolerance"] = stability_energy_tolerance;
+        Json limits = Json::array();
+        for (const StabilityLimit& l : r.limits) {
+            Json x;
+            x["method"] = to_string(l.method);
+            x["k"] = l.stiffness;
+            x["theoretical_dt"] = std::isfinite(l.theoretical_dt) ? Json(l.theoretical_dt) : Json(nullptr);
+            x["measured_dt"] = optional_json(l.measured_dt);
+            x["first_unstable_dt"] = optional_json(l.first_unstable_dt);
+            limits.push_back(x);
+        }
+        j["limits"] = limits;
+        Json map = Json::array(), sweep = Json::array();
+        for (const StabilityCell& c : r.map_cells) map.push_back(cell_json(c));
+        for (const StabilityCell& c : r.sweep_cells) sweep.push_back(cell_json(c));
+        j["map"] = map;
+        j["sweep"] = sweep;
+        std::cout << j.dump(2) << "\n";
+    } else {
+        print_text(r, options.grid, where);
+    }
+    return exit_ok;
+}
+
+}  // namespace
+
+void add_stability_command(CLI::App& app, int& exit_code) {
+    auto o = std::make_shared<StabilityCliOptions>();
+    CLI::App* cmd = app.add_subcommand("stability", "extremes grid: stable / energy growth / NaN / escaped / jitter / tunnelled");
+    cmd->footer(
+        "Sweep the extremes: time step (1e-5 .. 0.5 s) x linear drag stiffness k (0 .. 1e4 1/s) for\n"
+        "every method, and time step x launch speed (0 .. 1e3 m/s) x restitution (0, 0.5, 1) x radius\n"
+        "(up to 0.49 of the room). Each cell is classified stable, energy_growth, nan, escaped, jitter\n"
+        "or tunnelled; the theoretical dt limit is printed beside the measured one.");
+    cmd->add_option("PRESET", o->preset, "preset whose room, gravity, contact and particle mass to use\n"
+                                         "(default: the seed's 2 m cube)");
+    cmd->add_flag("--quick", o->quick, "a small grid (a second or so)");
+    cmd->add_option("--threads", o->threads, "worker threads (default: all cores)");
+    auto* csv = cmd->add_flag("--csv", o->csv, "print every cell as CSV");
+    auto* json = cmd->add_flag("--json", o->json, "print JSON");
+    csv->excludes(json);
+    cmd->callback([o, &exit_code] { exit_code = stability(*o); });
+}
+
+}  // namespace pl::cli

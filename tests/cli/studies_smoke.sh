@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# accuracy, stability and advise run end to end and print well-formed CSV/JSON.
+set -euo pipefail
+bin=$1 src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+"$bin" accuracy "$src/presets/drop_restitution_0.8.json" --methods semi_implicit_euler,rk4,dopri5 \
+  --tol 1e-4,1e-8 --duration 1 --csv > "$tmp/acc.csv"
+python3 - "$tmp/acc.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 5 + 5 + 2, len(rows)
+semi = [r for r in rows if r["method"] == "semi_implicit_euler"]
+assert [float(r["dt"]) for r in semi] == [0.004, 0.002, 0.001, 0.0005, 0.00025]
+assert 0.7 < float(semi[0]["observed_order"]) < 1.3, semi[0]["observed_order"]
+assert all(r["bounce_time_error"] != "" for r in semi)  # the drop hits the floor at t = 0.64 s
+assert all(r["tol"] != "" and r["adaptive"] == "1" for r in rows if r["method"] == "dopri5")
+PY
+"$bin" accuracy "$src/presets/default.json" --methods rk4 --json > "$tmp/acc.json"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); assert d["orders"][0]["method"] == "rk4"' "$tmp/acc.json"
+
+"$bin" stability --quick --json > "$tmp/stab.json"
+python3 - "$tmp/stab.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+lim = [l for l in d["limits"] if l["method"] == "semi_implicit_euler" and l["k"] == 1000]
+assert lim and abs(lim[0]["theoretical_dt"] - 0.002) < 1e-15, lim
+assert lim[0]["first_unstable_dt"] is not None
+assert {c["outcome"] for c in d["map"]} <= {"stable", "energy_growth", "nan", "escaped", "jitter", "tunnelled"}
+assert len(d["sweep"]) > 0
+PY
+"$bin" stability "$src/presets/default.json" --quick > "$tmp/stab.txt"
+grep -q "theory dt" "$tmp/stab.txt"
+
+"$bin" advise "$src/presets/default.json" --json > "$tmp/adv.json"
+python3 - "$tmp/adv.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+v = d["variants"][0]
+assert [r["drag"] for r in v["runs"]][:4] == ["none", "linear", "quadratic", "sphere_re"]
+assert v["reynolds_max"] > 1e3 and any("linear drag is wrong here" in s for s in v["verdicts"]), v["verdicts"]
+PY
+
+echo ok

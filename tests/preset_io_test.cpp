@@ -1,0 +1,518 @@
+// Preset (de)serialisation: the shipped presets load, saved files load back identical, every
+// field is written, and errors carry their JSON path.
+#include "physics/preset_io.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace pl {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path preset_dir = fs::path(PL_SOURCE_DIR) / "presets";
+
+// A fresh directory under the system temp dir, removed afterwards.
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        path = fs::temp_directory_path() /
+               ("pl_preset_io_" + std::to_string(::getpid()) + "_" + test->test_suite_name() + "_" + test->name());
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+std::string read_bytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<fs::path> shipped_presets() {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(preset_dir))
+        if (entry.path().extension() == ".json") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// Bitwise equality, so -0.0 vs 0.0 or a last-bit rounding difference shows up.
+bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same(const Vec3& a, const Vec3& b) { return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z); }
+
+// Field-by-field comparison reporting the first difference (empty when equal).
+struct SceneDiff {
+    std::string first;
+    void check(bool equal, const std::string& field) {
+        if (!equal && first.empty()) first = field;
+    }
+    void air(const Air& a, const Air& b, const std::string& p) {
+        check(same(a.density_kg_m3, b.density_kg_m3), p + ".density");
+        check(same(a.viscosity_pa_s, b.viscosity_pa_s), p + ".viscosity");
+    }
+    void wind(const WindSettings& a, const WindSettings& b, const std::string& p) {
+        check(a.kind == b.kind, p + ".kind");
+        check(same(a.velocity, b.velocity), p + ".velocity");
+        check(same(a.gust_amplitude, b.gust_amplitude), p + ".amplitude");
+        check(same(a.gust_period_s, b.gust_period_s), p + ".period");
+        check(a.gust_seed == b.gust_seed, p + ".seed");
+        check(same(a.reference_height_m, b.reference_height_m), p + ".reference_height");
+        check(same(a.shear_exponent, b.shear_exponent), p + ".exponent");
+        check(same(a.vortex_center, b.vortex_center), p + ".center");
+        check(same(a.vortex_axis, b.vortex_axis), p + ".axis");
+        check(same(a.vortex_max_speed, b.vortex_max_speed), p + ".max_speed");
+        check(same(a.vortex_core_radius_m, b.vortex_core_radius_m), p + ".core_radius");
+    }
+    void drag(const DragSettings& a, const DragSettings& b, const std::string& p) {
+        check(a.model == b.model, p + ".model");
+        check(same(a.cd, b.cd), p + ".cd");
+        check(a.linear_b.has_value() == b.linear_b.has_value() && (!a.linear_b || same(*a.linear_b, *b.linear_b)), p + ".b");
+    }
+    void contact(const ContactSettings& a, const ContactSettings& b, const std::string& p) {
+        check(same(a.restitution, b.restitution), p + ".restitution");
+        check(same(a.friction, b.friction), p + ".friction");
+        check(same(a.rest_speed, b.rest_speed), p + ".rest_speed");
+    }
+    void integrator(const IntegratorSettings& a, const IntegratorSettings& b, const std::string& p) {
+        check(a.method == b.method, p + ".method");
+        check(same(a.dt, b.dt), p + ".dt");
+        check(same(a.rtol, b.rtol), p + ".rtol");
+        check(same(a.atol, b.atol), p + ".atol");
+        check(a.adaptive == b.adaptive, p + ".adaptive");
+    }
+    template <class T, class F>
+    void optional(const std::optional<T>& a, const std::optional<T>& b, const std::string& p, F compare) {
+        check(a.has_value() == b.has_value(), p + " (presence)");
+        if (a && b) compare(*a, *b, p);
+    }
+    void scene(const Scene& a, const Scene& b) {
+        check(a.name == b.name, "name");
+        check(a.description == b.description, "description");
+        check(same(a.room.center, b.room.center), "room.center");
+        check(same(a.room.size, b.room.size), "room.size");
+        check(same(a.world.gravity, b.world.gravity), "world.gravity");
+        air(a.world.air, b.world.air, "world.air");
+        wind(a.world.wind, b.world.wind, "world.wind");
+        drag(a.drag, b.drag, "drag");
+        contact(a.contact, b.contact, "contact");
+        integrator(a.integrator, b.integrator, "integrator");
+        check(a.particles.size() == b.particles.size(), "particles (count)");
+        for (std::size_t i = 0; i < std::min(a.particles.size(), b.particles.size()); ++i) {
+            const std::string p = "particles[" + std::to_string(i) + "]";
+            check(same(a.particles[i].position, b.particles[i].position), p + ".position");
+            check(same(a.particles[i].velocity, b.particles[i].velocity), p + ".velocity");
+            check(same(a.particles[i].mass, b.particles[i].mass), p + ".mass");
+            check(same(a.particles[i].radius, b.particles[i].radius), p + ".radius");
+        }
+        optional(a.emitter, b.emitter, "emitter", [&](const Emitter& x, const Emitter& y, const std::string& p) {
+            check(x.count == y.count, p + ".count");
+            check(x.seed == y.seed, p + ".seed");
+            check(same(x.region_min, y.region_min) && same(x.region_max, y.region_max), p + ".region");
+            check(same(x.speed_min, y.speed_min) && same(x.speed_max, y.speed_max), p + ".speed");
+            check(same(x.direction, y.direction), p + ".direction");
+            check(same(x.spread_deg, y.spread_deg), p + ".spread_deg");
+            check(same(x.mass_min, y.mass_min) && same(x.mass_max, y.mass_max), p + ".mass");
+            check(same(x.radius_min, y.radius_min) && same(x.radius_max, y.radius_max), p + ".radius");
+        });
+        check(a.variants.size() == b.variants.size(), "variants (count)");
+        for (std::size_t i = 0; i < std::min(a.variants.size(), b.variants.size()); ++i) {
+            const std::string p = "variants[" + std::to_string(i) + "]";
+            const Variant &x = a.variants[i], &y = b.variants[i];
+            check(x.label == y.label, p + ".label");
+            optional(x.drag, y.drag, p + ".drag", [&](auto& u, auto& v, auto& q) { drag(u, v, q); });
+            optional(x.wind, y.wind, p + ".wind", [&](auto& u, auto& v, auto& q) { wind(u, v, q); });
+            optional(x.air, y.air, p + ".air", [&](auto& u, auto& v, auto& q) { air(u, v, q); });
+            optional(x.contact, y.contact, p + ".contact", [&](auto& u, auto& v, auto& q) { contact(u, v, q); });
+            optional(x.integrator, y.integrator, p + ".integrator", [&](auto& u, auto& v, auto& q) { integrator(u, v, q); });
+        }
+    }
+};
+
+std::string scene_difference(const Scene& a, const Scene& b) {
+    SceneDiff d;
+    d.scene(a, b);
+    return d.first;
+}
+
+Scene load_ok(const fs::path& file) {
+    LoadResult r = load_preset(file);
+    EXPECT_TRUE(r.ok()) << file << ":\n" << r.error_text();
+    return r.scene.value_or(Scene{});
+}
+
+// A scene that uses every field with values whose decimal forms are awkward.
+Scene awkward_scene() {
+    Scene s;
+    s.name = "Awkward \"quoted\" name \xC3\xA9\t\u00b0 \\ / \x01";
+    s.description = "line one\nline two";
+    s.room.center = {0.1 + 0.2, -1.0 / 3.0, 5e-324};
+    s.room.size = {10.000000000000002, 6.0, 9.999999999999998};
+    s.world.gravity = {1e-300, -9.80665, -0.0};
+    s.world.air = {1.2250000000000001, 1.8100000000000002e-5};
+    s.world.wind = {WindKind::vortex, {1.0 / 7.0, 0, 2.5}, {0.3, 0.0, 1e-17}, 2.718281828459045,
+                    std::numeric_limits<std::uint64_t>::max(), 3.3, 0.14285714285714285, {0.5, -0.25, 1e5},
+                    {1e-9, 1.0, 0.0}, 12.345678901234567, 0.75};
+    s.drag = {DragModel::linear, 0.4700000000000001, 1e-7};
+    s.contact = {0.95, 0.0, 0.0};
+    s.integrator = {Method::dopri5, 1.0 / 1024.0, 1e-12, 1e-15, false};
+    // The first particle touches three walls (centre exactly a radius from each).
+    const Vec3 lo = s.room.min_corner(), hi = s.room.max_corner();
+    s.particles = {{{lo.x + 0.033, lo.y + 0.033, hi.z - 0.033}, {99999.99999999999, -0.0, 1e-310}, 1e-30, 0.033},
+                   {{0.1 + 0.2, -1.0 / 3.0, 5e-324}, {3, 4, 1}, 1e6, 2.9999999999999996}};
+    Emitter e;
+    e.count = max_preset_particles - s.particles.size();
+    e.seed = 0x9E3779B97F4A7C15ull;
+    e.region_min = {-1e6, -0.1, -0.7};
+    e.region_max = {1e6, 0.1, 0.7};
+    e.speed_min = 0.1;
+    e.speed_max = 0.1;
+    e.direction = {1e-3, -1, 7};
+    e.spread_deg = 179.99999999999997;
+    e.mass_min = 0.001;
+    e.mass_max = 0.0010000000000000002;
+    e.radius_min = 1e-6;
+    e.radius_max = 2.5;
+    s.emitter = e;
+    Variant v1;
+    v1.label = "every section";
+    v1.drag = DragSettings{DragModel::sphere_re, 0.3, std::nullopt};
+    v1.wind = WindSettings{};
+    v1.wind->kind = WindKind::gust;
+    v1.air = Air{0.909, 1.69e-5};
+    v1.contact = ContactSettings{0.0, 10.0, 1000.0};
+    v1.integrator = IntegratorSettings{Method::exponential, 1.0, 1.0, 1.0, true};
+    Variant v2;
+    v2.label = "label only";
+    s.variants = {v1, v2};
+    return s;
+}
+
+// ---------------------------------------------------------------- shipped presets
+
+TEST(ShippedPresets, AllLoadWithoutErrorsAndExplainThemselves) {
+    const std::vector<fs::path> files = shipped_presets();
+    ASSERT_GE(files.size(), 12u);
+    for (const fs::path& file : files) {
+        const Scene s = load_ok(file);
+        EXPECT_FALSE(s.name.empty() || s.name == "Untitled") << file;
+        EXPECT_GE(s.description.size(), 80u) << file << ": a description a student understands";
+        EXPECT_FALSE(initial_particles(s).empty()) << file;
+    }
+}
+
+TEST(ShippedPresets, DefaultIsTheBallThrownInARoom) {
+    const Scene s = load_ok(preset_dir / "default.json");
+    ASSERT_EQ(s.particles.size(), 1u);
+    EXPECT_EQ(s.particles[0].velocity, Vec3(3, 4, 1));
+    EXPECT_EQ(s.room.size, Vec3(10, 6, 10));
+    EXPECT_EQ(s.contact.restitution, 0.8);
+    EXPECT_EQ(s.contact.friction, 0.3);
+    EXPECT_EQ(s.integrator.method, Method::semi_implicit_euler);
+    EXPECT_EQ(s.integrator.dt, 0.002);
+    EXPECT_EQ(s.drag.model, DragModel::quadratic);
+    EXPECT_EQ(s.drag.cd, 0.47);
+    EXPECT_EQ(s.world.air.density_kg_m3, 1.225);
+    EXPECT_TRUE(s.variants.empty());
+}
+
+TEST(ShippedPresets, ComparisonPresetsHaveTheirVariants) {
+    const Scene drag = load_ok(preset_dir / "drag_models.json");
+    std::set<DragModel> models;
+    for (std::size_t v = 0; v < variant_count(drag); ++v) models.insert(model_for_variant(drag, v).drag.model);
+    EXPECT_EQ(models.size(), 4u);
+
+    const Scene integrators = load_ok(preset_dir / "integrators.json");
+    std::set<Method> methods;
+    for (std::size_t v = 0; v < variant_count(integrators); ++v) {
+        const Model m = model_for_variant(integrators, v);
+        methods.insert(m.integrator.method);
+        EXPECT_EQ(m.integrator.dt, 0.01) << m.label;
+        EXPECT_EQ(m.drag.model, DragModel::quadratic);
+    }
+    EXPECT_EQ(methods.size(), 6u);
+
+    const Scene ladder = load_ok(preset_dir / "dt_ladder.json");
+    std::vector<double> dts;
+    for (std::size_t v = 0; v < variant_count(ladder); ++v) {
+        const Model m = model_for_variant(ladder, v);
+        EXPECT_EQ(m.integrator.method, Method::semi_implicit_euler);
+        dts.push_back(m.integrator.dt);
+    }
+    EXPECT_EQ(dts, (std::vector<double>{0.04, 0.02, 0.01, 0.005, 0.0025}));
+
+    const Scene wind = load_ok(preset_dir / "wind_kinds.json");
+    std::set<WindKind> kinds;
+    for (std::size_t v = 0; v < variant_count(wind); ++v) kinds.insert(model_for_variant(wind, v).world.wind.kind);
+    EXPECT_EQ(kinds.size(), 5u);
+
+    const Scene restitution = load_ok(preset_dir / "restitution.json");
+    std::vector<double> es;
+    for (std::size_t v = 0; v < variant_count(restitution); ++v)
+        es.push_back(model_for_variant(restitution, v).contact.restitution);
+    EXPECT_EQ(es, (std::vector<double>{0.5, 0.8, 0.95}));
+
+    const Scene altitude = load_ok(preset_dir / "altitude_air.json");
+    ASSERT_EQ(variant_count(altitude), 2u);
+    EXPECT_EQ(model_for_variant(altitude, 1).world.air.density_kg_m3, 0.909);
+    EXPECT_EQ(model_for_variant(altitude, 1).world.air.viscosity_pa_s, 1.69e-5);
+}
+
+TEST(ShippedPresets, DropStartsTwoMetresAboveTheFloor) {
+    const Scene s = load_ok(preset_dir / "drop_restitution_0.8.json");
+    ASSERT_EQ(s.particles.size(), 1u);
+    const ParticleSpec& p = s.particles[0];
+    EXPECT_NEAR(p.position.y - p.radius - s.room.floor_y(), 2.0, 1e-12);
+    EXPECT_EQ(p.velocity, Vec3(0.0));
+    EXPECT_EQ(s.contact.restitution, 0.8);
+    EXPECT_EQ(s.drag.model, DragModel::none);
+}
+
+TEST(ShippedPresets, ManyParticlesEmitsTenThousandInsideTheRoom) {
+    const Scene s = load_ok(preset_dir / "many_particles.json");
+    ASSERT_TRUE(s.emitter.has_value());
+    const std::vector<ParticleSpec> particles = initial_particles(s);
+    ASSERT_EQ(particles.size(), 10000u);
+    const Vec3 lo = s.room.min_corner(), hi = s.room.max_corner();
+    for (const ParticleSpec& p : particles)
+        for (int a = 0; a < 3; ++a) {
+            ASSERT_GE(p.position[a], lo[a] + p.radius);
+            ASSERT_LE(p.position[a], hi[a] - p.radius);
+        }
+}
+
+// ---------------------------------------------------------------- round trip
+
+TEST(PresetRoundTrip, EveryShippedPresetSavesAndLoadsBackIdentical) {
+    TempDir dir;
+    for (const fs::path& file : shipped_presets()) {
+        const Scene original = load_ok(file);
+        const fs::path copy = dir.path / file.filename();
+        const SaveResult saved = save_preset(copy, original);
+        ASSERT_TRUE(saved.ok) << saved.error;
+        const Scene reloaded = load_ok(copy);
+        EXPECT_EQ(scene_difference(original, reloaded), "") << file;
+        EXPECT_EQ(serialize_preset(reloaded), read_bytes(copy)) << file;
+    }
+}
+
+TEST(PresetRoundTrip, AwkwardDoublesStringsAndSeedsSurviveBitForBit) {
+    const Scene original = awkward_scene();
+    const std::string text = serialize_preset(original);
+    const LoadResult r = parse_preset(text);
+    ASSERT_TRUE(r.ok()) << r.error_text() << "\n" << text;
+    EXPECT_EQ(scene_difference(original, *r.scene), "");
+    EXPECT_EQ(serialize_preset(*r.scene), text);
+}
+
+TEST(PresetRoundTrip, DefaultSceneRoundTrips) {
+    Scene s;
+    s.particles.push_back(ParticleSpec{});
+    const LoadResult r = parse_preset(serialize_preset(s));
+    ASSERT_TRUE(r.ok()) << r.error_text();
+    EXPECT_EQ(scene_difference(s, *r.scene), "");
+}
+
+// ---------------------------------------------------------------- format details
+
+TEST(PresetFormat, SavedFilesListEveryFieldIncludingDefaults) {
+    Scene s;
+    s.particles.push_back(ParticleSpec{});
+    const std::string text = serialize_preset(s);
+    for (const char* key : {"\"format\": \"particle-lab-preset\"", "\"version\": 1", "\"name\"", "\"description\"",
+                            "\"center\"", "\"size\"", "\"gravity\"", "\"density\"", "\"viscosity\"", "\"kind\": \"none\"",
+                            "\"velocity\"", "\"amplitude\"", "\"period\"", "\"seed\"", "\"reference_height\"",
+                            "\"exponent\"", "\"axis\"", "\"max_speed\"", "\"core_radius\"", "\"model\": \"none\"",
+                            "\"cd\"", "\"restitution\"", "\"friction\"", "\"rest_speed\"",
+                            "\"method\": \"semi_implicit_euler\"", "\"dt\"", "\"rtol\"", "\"atol\"", "\"adaptive\"",
+                            "\"position\"", "\"mass\"", "\"radius\"", "\"variants\": []"})
+        EXPECT_NE(text.find(key), std::string::npos) << key << " missing from\n" << text;
+    EXPECT_NE(text.find("\"b\": null"), std::string::npos) << "unset b (Stokes) is written as null";
+}
+
+TEST(PresetFormat, PrettyPrintedWithTwoSpaceIndent) {
+    Scene s;
+    s.particles.push_back(ParticleSpec{});
+    const std::string text = serialize_preset(s);
+    EXPECT_EQ(text.rfind("{\n  \"format\"", 0), 0u) << text;
+    EXPECT_NE(text.find("\n  \"room\": "), std::string::npos);
+    EXPECT_NE(text.find("\n    \"gravity\": [0.0, -9.81, 0.0]"), std::string::npos) << text;
+    EXPECT_EQ(text.back(), '\n');
+    EXPECT_EQ(text.find('\t'), std::string::npos);
+}
+
+TEST(PresetFormat, OmittedSectionsAndFieldsTakeTheSceneDefaults) {
+    const LoadResult r = parse_preset(R"({ "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0, 0, 0], "size": [10, 6, 10] },
+        "particles": [ { "position": [0, 1, 0] } ] })");
+    ASSERT_TRUE(r.ok()) << r.error_text();
+    Scene expected;
+    expected.particles.push_back(ParticleSpec{});
+    EXPECT_EQ(scene_difference(expected, *r.scene), "");
+}
+
+TEST(PresetFormat, VariantSectionsStartFromTheScenesOwnSection) {
+    const LoadResult r = parse_preset(R"({ "variants": [ { "label": "fine", "integrator": { "dt": 0.0005 } },
+                                                        { "label": "no friction", "contact": { "friction": 0 } } ],
+        "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0, 0, 0], "size": [10, 6, 10] },
+        "integrator": { "method": "rk4", "dt": 0.01 },
+        "contact": { "restitution": 0.5 },
+        "particles": [ { "position": [0, 1, 0] } ] })");
+    ASSERT_TRUE(r.ok()) << r.error_text();
+    const Scene& s = *r.scene;
+    ASSERT_EQ(s.variants.size(), 2u);
+    EXPECT_EQ(s.variants[0].integrator->method, Method::rk4);
+    EXPECT_EQ(s.variants[0].integrator->dt, 0.0005);
+    EXPECT_FALSE(s.variants[0].contact.has_value());
+    EXPECT_EQ(s.variants[1].contact->restitution, 0.5);
+    EXPECT_EQ(s.variants[1].contact->friction, 0.0);
+}
+
+TEST(PresetFormat, LinearDragCoefficientIsOptional) {
+    const std::string head = R"({ "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0, 0, 0], "size": [10, 6, 10] }, "particles": [ { "position": [0, 1, 0] } ], )";
+    const LoadResult stokes = parse_preset(head + R"("drag": { "model": "linear" } })");
+    ASSERT_TRUE(stokes.ok()) << stokes.error_text();
+    EXPECT_FALSE(stokes.scene->drag.linear_b.has_value());
+    const LoadResult explicit_b = parse_preset(head + R"("drag": { "model": "linear", "b": 0.02 } })");
+    ASSERT_TRUE(explicit_b.ok()) << explicit_b.error_text();
+    EXPECT_EQ(explicit_b.scene->drag.linear_b, 0.02);
+    // A variant can go back to Stokes with an explicit null.
+    const LoadResult variant = parse_preset(head + R"("drag": { "model": "linear", "b": 0.02 },
+        "variants": [ { "label": "Stokes", "drag": { "b": null } }, { "label": "same b", "drag": {} } ] })");
+    ASSERT_TRUE(variant.ok()) << variant.error_text();
+    EXPECT_FALSE(variant.scene->variants[0].drag->linear_b.has_value());
+    EXPECT_EQ(variant.scene->variants[1].drag->linear_b, 0.02);
+}
+
+TEST(PresetFormat, WholeNumberFloatsAreAcceptedForCountsAndSeeds) {
+    const LoadResult r = parse_preset(R"({ "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0, 0, 0], "size": [10, 6, 10] },
+        "emitter": { "count": 1e3, "seed": 18446744073709551615 } })");
+    ASSERT_TRUE(r.ok()) << r.error_text();
+    EXPECT_EQ(r.scene->emitter->count, 1000u);
+    EXPECT_EQ(r.scene->emitter->seed, std::numeric_limits<std::uint64_t>::max());
+}
+
+TEST(PresetFormat, ASphereRestingExactlyOnTheFloorFits) {
+    const LoadResult r = parse_preset(R"({ "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0.1, 0.2, 0.3], "size": [10, 6, 10] },
+        "particles": [ { "position": [-4.867, -2.767, 5.267], "radius": 0.033 } ] })");
+    EXPECT_TRUE(r.ok()) << r.error_text();
+}
+
+// ---------------------------------------------------------------- errors
+
+TEST(PresetErrors, EveryProblemIsReportedWithPathAndRule) {
+    const LoadResult r = parse_preset(R"({ "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0, 0, 0], "size": [10, 0, 10] },
+        "drag": { "model": "quadratic", "cdd": 0.5 },
+        "contact": { "restitution": 1.5 },
+        "integrator": { "method": "rk5" },
+        "particles": [ { "position": [0, 0, 0] }, { "position": [0, 0, 0] }, { "position": [0, 0, 0], "mass": -1 } ] })");
+    ASSERT_FALSE(r.ok());
+    EXPECT_FALSE(r.scene.has_value());
+    const std::string expected =
+        "room.size[1]: must be > 0, got 0\n"
+        "drag.cdd: unknown key (expected one of model, cd, b)\n"
+        "contact.restitution: must be in [0, 1], got 1.5\n"
+        "integrator.method: unknown value \"rk5\"; expected one of explicit_euler, semi_implicit_euler, "
+        "velocity_verlet, rk4, dopri5, exponential\n"
+        "particles[2].mass: must be > 0, got -1";
+    EXPECT_EQ(r.error_text(), expected);
+    ASSERT_EQ(r.errors.size(), 5u);
+    EXPECT_EQ(r.errors[4].path, "particles[2].mass");
+    EXPECT_EQ(r.errors[4].message, "must be > 0, got -1");
+}
+
+TEST(PresetErrors, ParticleThatDoesNotFitNamesItsRadiusAndPosition) {
+    const LoadResult r = parse_preset(R"({ "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0, 0, 0], "size": [10, 6, 10] },
+        "particles": [ { "position": [4.8, 0, 0], "radius": 0.5 } ] })");
+    ASSERT_EQ(r.errors.size(), 1u) << r.error_text();
+    EXPECT_EQ(r.errors[0].path, "particles[0]");
+    EXPECT_EQ(r.errors[0].message.rfind("sphere (radius 0.5) does not fit inside the room at position [4.8, 0, 0]", 0), 0u)
+        << r.errors[0].message;
+}
+
+TEST(PresetErrors, DuplicateKeysAreErrorsWithTheirPath) {
+    const LoadResult r = parse_preset(R"({ "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0, 0, 0], "size": [10, 6, 10] },
+        "particles": [ { "position": [0, 0, 0] }, { "position": [0, 0, 0], "mass": 1, "mass": 2 } ] })");
+    ASSERT_EQ(r.errors.size(), 1u) << r.error_text();
+    EXPECT_EQ(r.errors[0].to_string(), "particles[1].mass: duplicate key (each key may appear only once)");
+}
+
+TEST(PresetErrors, BrokenJsonGivesLineAndColumn) {
+    const LoadResult r = parse_preset("{\n  \"format\": \"particle-lab-preset\",\n  \"version\": 1,,\n}");
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].path, "");
+    EXPECT_NE(r.errors[0].message.find("line 3, column 16"), std::string::npos) << r.errors[0].message;
+}
+
+TEST(PresetErrors, AFloodOfErrorsIsCappedWithACount) {
+    std::string particles;
+    for (int i = 0; i < 3000; ++i) particles += std::string(i ? "," : "") + R"({ "position": [0, 0, 0], "mass": -1 })";
+    const LoadResult r = parse_preset(R"({ "format": "particle-lab-preset", "version": 1,
+        "room": { "center": [0, 0, 0], "size": [10, 6, 10] }, "particles": [)" + particles + "] }");
+    ASSERT_FALSE(r.ok());
+    ASSERT_EQ(r.errors.size(), 1001u);
+    EXPECT_EQ(r.errors.back().to_string(), "... and 2000 more errors not shown");
+}
+
+// ---------------------------------------------------------------- saving
+
+TEST(PresetSave, WritesAtomicallyAndKeepsThePreviousFileAsBackup) {
+    TempDir dir;
+    const fs::path file = dir.path / "mine.json";
+    Scene first = load_ok(preset_dir / "default.json");
+    ASSERT_TRUE(save_preset(file, first).ok);
+    EXPECT_FALSE(fs::exists(dir.path / "mine.json.bak")) << "nothing to back up on the first save";
+    const std::string first_bytes = read_bytes(file);
+
+    Scene second = first;
+    second.contact.restitution = 0.5;
+    const SaveResult saved = save_preset(file, second);
+    ASSERT_TRUE(saved.ok) << saved.error;
+    EXPECT_EQ(read_bytes(dir.path / "mine.json.bak"), first_bytes);
+    EXPECT_FALSE(fs::exists(dir.path / "mine.json.tmp"));
+    EXPECT_EQ(load_ok(file).contact.restitution, 0.5);
+
+    // A third save backs up the second version.
+    const std::string second_bytes = read_bytes(file);
+    ASSERT_TRUE(save_preset(file, first).ok);
+    EXPECT_EQ(read_bytes(dir.path / "mine.json.bak"), second_bytes);
+    EXPECT_EQ(read_bytes(file), first_bytes);
+}
+
+TEST(PresetSave, RefusesAnInvalidSceneAndWritesNothing) {
+    TempDir dir;
+    const fs::path file = dir.path / "bad.json";
+    Scene s = load_ok(preset_dir / "default.json");
+    s.particles[0].mass = -1;
+    s.integrator.dt = std::numeric_limits<double>::quiet_NaN();
+    const SaveResult r = save_preset(file, s);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("particles[0].mass: must be > 0, got -1"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("integrator.dt"), std::string::npos) << r.error;
+    EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+}  // namespace
+}  // namespace pl

@@ -1,0 +1,129 @@
+// Threads split the particles into contiguous ranges; each range's events are appended in range
+// order. So state, ledger, events, warnings and counters must be bit-identical for any thread count.
+#include "physics/emitter.hpp"
+#include "physics/fast_kernel.hpp"
+#include "physics/simulation.hpp"
+#include "physics/thread_pool.hpp"
+#include "same_state.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+#include <vector>
+
+namespace pl {
+namespace {
+
+struct Crowd {
+    Model model;
+    std::vector<ParticleSpec> particles;
+};
+
+// Many particles in a small room: plenty of bounces, rests and events in every range.
+Crowd crowd(std::size_t n, Method method, DragModel drag, WindKind wind) {
+    Crowd c;
+    c.model.room.size = {2.0, 2.0, 2.0};
+    c.model.contact.restitution = 0.6;
+    c.model.contact.friction = 0.4;
+    c.model.contact.rest_speed = 0.3;
+    c.model.integrator.method = method;
+    c.model.integrator.dt = 0.004;
+    c.model.drag.model = drag;
+    c.model.world.wind.kind = wind;
+    c.model.world.wind.velocity = {3.0, 0.0, -1.0};
+    Emitter e;
+    e.count = n;
+    e.seed = 42;
+    e.region_min = {-1, -1, -1};
+    e.region_max = {1, 1, 1};
+    e.speed_max = 8.0;
+    e.radius_min = 0.01;
+    e.radius_max = 0.08;
+    e.mass_min = 0.01;
+    e.mass_max = 0.3;
+    c.particles = emit_particles(e, c.model.room);
+    return c;
+}
+
+void expect_same_for_1_2_3_threads(const Crowd& c, int steps) {
+    std::vector<Simulation> runs;
+    for (int threads : {1, 2, 3}) {
+        runs.emplace_back(c.model, c.particles);
+        runs.back().set_threads(threads);
+        runs.back().step_n(static_cast<std::uint64_t>(steps));
+    }
+    EXPECT_GT(runs[0].events().size(), 100u);
+    for (std::size_t k = 1; k < runs.size(); ++k) {
+        SCOPED_TRACE("threads " + std::to_string(k + 1));
+        test::expect_identical(runs[k], runs[0]);
+        EXPECT_EQ(runs[k].counters().fast_path, runs[0].counters().fast_path);
+    }
+}
+
+TEST(Threading, StatesAndEventsIdenticalFor1And2And3ThreadsWithDragAndWind) {
+    const Crowd c = crowd(3600, Method::semi_implicit_euler, DragModel::quadratic, WindKind::shear);
+    ASSERT_EQ(particle_ranges(c.particles.size(), 2), 3u);  // 3 ranges shared by 2 threads
+    ASSERT_EQ(particle_ranges(c.particles.size(), 3), 3u);
+    expect_same_for_1_2_3_threads(c, 80);
+}
+
+TEST(Threading, StatesAndEventsIdenticalWithoutWindOnTheVectorisedPath) {
+    expect_same_for_1_2_3_threads(crowd(3600, Method::rk4, DragModel::linear, WindKind::none), 80);
+}
+
+TEST(Threading, StatesAndEventsIdenticalForTheAdaptiveMethod) {
+    expect_same_for_1_2_3_threads(crowd(3600, Method::dopri5, DragModel::quadratic, WindKind::none), 15);
+}
+
+TEST(Threading, ThreadedFastKernelMatchesTheGenericKernel) {
+    const Crowd c = crowd(3000, Method::semi_implicit_euler, DragModel::quadratic, WindKind::gust);
+    Simulation threaded(c.model, c.particles), generic(c.model, c.particles);
+    threaded.set_threads(2);
+    generic.set_kernel(KernelChoice::generic);
+    threaded.step_n(80);
+    generic.step_n(80);
+    test::expect_identical(threaded, generic);
+}
+
+TEST(Threading, SmallScenesStaySingleThreaded) {
+    EXPECT_EQ(particle_ranges(100, 8), 1u);
+    EXPECT_EQ(particle_ranges(2 * min_particles_per_range - 1, 8), 1u);
+    EXPECT_EQ(particle_ranges(2 * min_particles_per_range, 8), 2u);
+    EXPECT_EQ(particle_ranges(1000000, 1), 1u);
+    EXPECT_EQ(particle_ranges(1000000, 3), 3 * ranges_per_thread);
+    EXPECT_EQ(thread_count(0), static_cast<std::size_t>(hardware_threads()));
+    EXPECT_EQ(thread_count(5), 5u);
+}
+
+TEST(Threading, PoolRunsEveryTaskExactlyOnce) {
+    ThreadPool pool;
+    for (std::size_t threads : {1u, 2u, 3u, 5u}) {
+        for (std::size_t tasks : {1u, 2u, 7u, 100u}) {
+            std::vector<std::atomic<int>> runs(tasks);
+            auto task = [&](std::size_t k) { runs[k].fetch_add(1); };
+            for (int round = 0; round < 20; ++round) pool.run(tasks, threads, task);
+            for (std::size_t k = 0; k < tasks; ++k) EXPECT_EQ(runs[k].load(), 20) << threads << " threads, task " << k;
+        }
+    }
+    EXPECT_EQ(pool.worker_count(), 4u);
+}
+
+TEST(Threading, ConcurrentCallersOfTheSharedPoolEachGetTheirWorkDone) {
+    // A second caller finds the pool busy and runs its tasks itself: never a deadlock.
+    auto caller = [](std::atomic<long>& sum) {
+        for (int round = 0; round < 200; ++round) {
+            auto task = [&](std::size_t k) { sum.fetch_add(static_cast<long>(k) + 1); };
+            ThreadPool::shared().run(4, 2, task);
+        }
+    };
+    std::atomic<long> a{0}, b{0};
+    std::thread other(caller, std::ref(b));
+    caller(a);
+    other.join();
+    EXPECT_EQ(a.load(), 200 * 10);
+    EXPECT_EQ(b.load(), 200 * 10);
+}
+
+}  // namespace
+}  // namespace pl

@@ -1,0 +1,240 @@
+#include "ui/frame_recorder.hpp"
+
+#include "physics/energy.hpp"
+#include "physics/relaunch.hpp"
+#include "ui/lab_ui.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pl::ui {
+namespace {
+
+// Per-particle samples closer than this in simulated time are skipped when record_step runs
+// every step: plots gain nothing from more, and a 10 us dt would otherwise flood the buffers.
+constexpr double min_particle_sample_interval_s = 5e-4;
+
+// Starts recording a fresh experiment. The shell steps before it records, so the experiment is
+// usually a frame past t = 0 already: the metrics and the first samples then start from the
+// scene's initial state (what every fresh or reset experiment starts from), so nothing of the
+// first frame is lost; the events of that frame are still pending and get observed next.
+void start_tracking(PlotHistory& h, const Experiment& e) {
+    h.reset(e.variant_count(), e.variant_count() > 0 ? e.run(0).particle_count() : 0);
+    h.source = &e;
+    h.source_steps = e.base_steps();
+    const bool metrics = h.particle_count <= PlotHistory::max_metrics_particles;
+    std::vector<ParticleSpec> initial;
+    if (metrics) initial = initial_particles(e.scene());
+    for (std::size_t v = 0; v < e.variant_count(); ++v) {
+        const Simulation& sim = e.run(v);
+        VariantCursor& c = h.cursors[v];
+        c.consumed_events = 0;
+        c.dropped_events = sim.dropped_events();
+        if (!metrics || initial.size() != sim.particle_count()) {
+            c.observed_steps = sim.step_count();
+            c.initial_energy = sim.state().initial_energy;
+            continue;
+        }
+        const Simulation start(sim.model(), initial);  // the state at t = 0
+        c.observed_steps = 0;
+        c.initial_energy = start.state().initial_energy;
+        h.trackers.push_back(start_metrics(start));
+        std::vector<ParticleTrack>& tracks = h.variants[v].particles;
+        const double floor_y = start.model().room.floor_y();
+        for (std::size_t i = 0; i < tracks.size(); ++i) {
+            const Vec3 vel = start.state().velocity(i);
+            tracks[i].height.push(0.0, start.state().y[i] - floor_y);
+            tracks[i].speed.push(0.0, glm::length(vel));
+            tracks[i].kinetic.push(0.0, kinetic_energy(start.state().mass[i], vel));
+        }
+        const EnergyBreakdown total = total_energy(start.state(), start.model().world.gravity, start.model().room);
+        LedgerTrack& l = h.variants[v].ledger;
+        l.kinetic.push(0.0, total.kinetic);
+        l.potential.push(0.0, total.potential);
+        for (SampleSeries* zero : {&l.bounce, &l.friction, &l.drag, &l.wind_work}) zero->push(0.0, 0.0);
+        l.residual.push(0.0, total.residual());
+    }
+    if (h.trackers.size() != e.variant_count()) h.trackers.clear();
+}
+
+// A particle launched again at time t from `position` with `velocity`: its metrics restart.
+void restart_metrics(MetricsTracker& m, std::size_t i, const Vec3& position, const Vec3& velocity, double t) {
+    if (i >= m.particles.size()) return;
+    m.start_position[i] = position;
+    m.prev_position[i] = position;
+    m.prev_velocity[i] = velocity;
+    m.particles[i] = ParticleMetrics{};
+    m.particles[i].apex_height = position.y - m.floor_y;
+    m.particles[i].apex_time = t;
+    m.stopped_since[i].reset();
+}
+
+double event_height(const Room& room, const Event& e, double radius) {
+    if (e.wall == Wall::y_min) return radius;
+    if (e.wall == Wall::y_max) return room.size.y - radius;
+    return std::numeric_limits<double>::quiet_NaN();  // a side wall: height unknown at that instant
+}
+
+// The exact state at an event makes bounces sharp in the plots (a V in the height, a jump in
+// speed and kinetic energy) however coarsely the frames sample the flight.
+void record_event_samples(ParticleTrack& track, const Room& room, const Event& e, double mass, double radius) {
+    if (e.kind != EventKind::bounce && e.kind != EventKind::rest) return;
+    const double h = event_height(room, e, radius);
+    if (std::isfinite(h)) track.height.push(e.t, h);
+    track.speed.push(e.t, e.speed_in);
+    track.speed.push(e.t, e.speed_out);
+    track.kinetic.push(e.t, 0.5 * mass * e.speed_in * e.speed_in);
+    track.kinetic.push(e.t, 0.5 * mass * e.speed_out * e.speed_out);
+}
+
+// Everything that happened in the variant since the last observation: new events, a relaunch
+// (the shell's L key changes a particle's initial energy), and one metrics observation.
+void observe(LabSession& s, PlotHistory& h, std::size_t v) {
+    Simulation& sim = s.experiment->run(v);
+    VariantCursor& c = h.cursors[v];
+    const ParticleState& state = sim.state();
+    const std::vector<Event>& events = sim.events();
+    // Events dropped by the simulation's own bound shift the indices.
+    const std::uint64_t dropped = sim.dropped_events() - c.dropped_events;
+    c.consumed_events = dropped >= c.consumed_events ? 0 : c.consumed_events - static_cast<std::size_t>(dropped);
+    c.dropped_events = sim.dropped_events();
+    if (c.consumed_events > events.size()) c.consumed_events = 0;  // drained by someone else
+    if (sim.step_count() == c.observed_steps && c.consumed_events == events.size()) return;
+
+    MetricsTracker* tracker = v < h.trackers.size() ? &h.trackers[v] : nullptr;
+    // Only the tracked particles can be launched again from the ui (L key, inspector kick).
+    const std::size_t watched = std::min({c.initial_energy.size(), state.size(), PlotHistory::max_tracked_particles});
+    for (std::size_t i = 0; i < watched; ++i) {
+        if (state.initial_energy[i] == c.initial_energy[i]) continue;
+        c.initial_energy[i] = state.initial_energy[i];
+        // Requests run before stepping, so the relaunch happened at the last observed time
+        // from the preset's start position, with the launch velocity.
+        if (!tracker) continue;
+        const std::vector<ParticleSpec> start = initial_particles(s.scene);
+        if (i < start.size()) restart_metrics(*tracker, i, start[i].position, s.launch_velocity, tracker->prev_time);
+    }
+
+    const std::vector<Event> fresh(events.begin() + static_cast<std::ptrdiff_t>(c.consumed_events), events.end());
+    c.consumed_events = events.size();
+    const Room& room = sim.model().room;
+    VariantTrack& track = h.variants[v];
+    for (const Event& e : fresh) {
+        h.log_event({static_cast<std::uint32_t>(v), e});
+        if (e.particle < track.particles.size())
+            record_event_samples(track.particles[e.particle], room, e, state.mass[e.particle], state.radius[e.particle]);
+    }
+    if (tracker && sim.step_count() != c.observed_steps) observe_step(*tracker, sim, fresh, 0.0);
+    c.observed_steps = sim.step_count();
+}
+
+void observe_all(LabSession& s, PlotHistory& h) {
+    for (std::size_t v = 0; v < h.variants.size(); ++v) observe(s, h, v);
+    h.source_steps = s.experiment->base_steps();
+}
+
+void sample_particles(PlotHistory& h, const Experiment& e, double t) {
+    for (std::size_t v = 0; v < h.variants.size(); ++v) {
+        const Simulation& sim = e.run(v);
+        const ParticleState& st = sim.state();
+        const double floor_y = sim.model().room.floor_y();
+        std::vector<ParticleTrack>& tracks = h.variants[v].particles;
+        for (std::size_t i = 0; i < tracks.size() && i < st.size(); ++i) {
+            const Vec3 vel = st.velocity(i);
+            tracks[i].height.push(t, st.y[i] - floor_y);
+            tracks[i].speed.push(t, glm::length(vel));
+            tracks[i].kinetic.push(t, kinetic_energy(st.mass[i], vel));
+        }
+    }
+    h.last_particle_sample = t;
+}
+
+void sample_aggregates(PlotHistory& h, const Experiment& e, double t) {
+    for (std::size_t v = 0; v < h.variants.size(); ++v) {
+        const Simulation& sim = e.run(v);
+        const ParticleState& st = sim.state();
+        const Model& m = sim.model();
+        VariantTrack& track = h.variants[v];
+        const EnergyBreakdown total = total_energy(st, m.world.gravity, m.room);
+        LedgerTrack& l = track.ledger;
+        l.kinetic.push(t, total.kinetic);
+        l.potential.push(t, total.potential);
+        l.bounce.push(t, total.dissipated_bounce);
+        l.friction.push(t, total.dissipated_friction);
+        l.drag.push(t, total.dissipated_drag);
+        l.wind_work.push(t, total.wind_work);
+        l.residual.push(t, total.residual());
+        if (!h.aggregated() || st.size() == 0) continue;
+        const double floor_y = m.room.floor_y();
+        double sum_h = 0.0, lo = INFINITY, hi = -INFINITY, sum_speed = 0.0;
+        for (std::size_t i = 0; i < st.size(); ++i) {
+            const double height = st.y[i] - floor_y;
+            sum_h += height;
+            lo = std::min(lo, height);
+            hi = std::max(hi, height);
+            sum_speed += std::sqrt(st.vx[i] * st.vx[i] + st.vy[i] * st.vy[i] + st.vz[i] * st.vz[i]);
+        }
+        const double n = static_cast<double>(st.size());
+        AggregateTrack& a = track.aggregate;
+        a.height_mean.push(t, sum_h / n);
+        a.height_min.push(t, lo);
+        a.height_max.push(t, hi);
+        a.speed_mean.push(t, sum_speed / n);
+        a.kinetic_total.push(t, total.kinetic);
+    }
+}
+
+}  // namespace
+
+PlotHistory& history_of(LabSession& s) {
+    if (!s.history) s.history = std::make_shared<PlotHistory>();
+    PlotHistory& h = *s.history;
+    if (s.experiment &&
+        (h.source != s.experiment.get() || s.experiment->base_steps() < h.source_steps ||
+         h.variants.size() != s.experiment->variant_count()))
+        start_tracking(h, *s.experiment);
+    return h;
+}
+
+void record_step(LabSession& s) {
+    if (!s.experiment) return;
+    PlotHistory& h = history_of(s);
+    observe_all(s, h);
+    const double t = s.experiment->time();
+    if (t - h.last_particle_sample >= min_particle_sample_interval_s) sample_particles(h, *s.experiment, t);
+}
+
+void record_frame(LabSession& s) {
+    if (!s.experiment) return;
+    PlotHistory& h = history_of(s);
+    observe_all(s, h);
+    Experiment& e = *s.experiment;
+    const double t = e.time();
+    if (t > h.last_particle_sample || h.last_particle_sample < 0.0) sample_particles(h, e, t);
+    if (t > h.last_time || h.last_time < 0.0) {
+        sample_aggregates(h, e, t);
+        h.last_time = t;
+    }
+    // Everything is recorded: hand the events back so the simulations' buffers stay small.
+    for (std::size_t v = 0; v < e.variant_count(); ++v) {
+        e.run(v).drain_events();
+        h.cursors[v].consumed_events = 0;
+    }
+}
+
+void kick_particle(LabSession& s, std::size_t i, const Vec3& velocity) {
+    if (!s.experiment) return;
+    PlotHistory& h = history_of(s);
+    observe_all(s, h);
+    const double t = s.experiment->time();
+    for (std::size_t v = 0; v < s.experiment->variant_count(); ++v) {
+        Simulation& sim = s.experiment->run(v);
+        if (i >= sim.particle_count()) continue;
+        const Vec3 position = sim.state().position(i);
+        relaunch_particle(sim, i, position, velocity);
+        h.cursors[v].initial_energy[i] = sim.state().initial_energy[i];
+        if (v < h.trackers.size()) restart_metrics(h.trackers[v], i, position, velocity, t);
+    }
+}
+
+}  // namespace pl::ui

@@ -1,0 +1,243 @@
+// The panels the shell lays out: control column, analysis tabs, status bar and popups.
+// (The plots region is in plots_panel.cpp, the recording in frame_recorder.cpp.)
+#include "ui/lab_ui.hpp"
+
+#include "ui/panel_state.hpp"
+#include "ui/sections.hpp"
+
+#include <imgui.h>
+
+#include <string>
+
+namespace pl::ui {
+
+PanelState& panels_of(LabSession& s) {
+    if (!s.panels) s.panels = std::make_shared<PanelState>();
+    return *s.panels;
+}
+
+std::string variant_name(const LabSession& s, std::size_t v) {
+    if (s.experiment && v < s.experiment->variant_count()) {
+        const std::string& label = s.experiment->run(v).model().label;
+        if (!label.empty()) return label;
+    }
+    if (s.experiment && s.experiment->variant_count() == 1) return "scene";
+    return "variant " + std::to_string(v);
+}
+
+std::size_t warning_count(const LabSession& s) {
+    std::size_t n = 0;
+    if (s.experiment)
+        for (const Simulation& sim : s.experiment->runs()) n += sim.warnings().size();
+    return n;
+}
+
+void draw_control_panel(LabSession& s) {
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    const std::string preset_header = std::string("Preset") + (s.dirty ? " *" : "") + "###preset";
+    if (ImGui::CollapsingHeader(preset_header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) draw_preset_section(s);
+    if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) draw_time_section(s);
+    if (ImGui::CollapsingHeader("Launch", ImGuiTreeNodeFlags_DefaultOpen)) draw_launch_section(s);
+    if (ImGui::CollapsingHeader("Scene")) draw_scene_section(s);
+    const std::string variants_header =
+        "Variants (" + std::to_string(s.scene.variants.empty() ? 1 : s.scene.variants.size()) + ")###variants";
+    if (ImGui::CollapsingHeader(variants_header.c_str())) draw_variants_section(s);
+    if (ImGui::CollapsingHeader("Inspector", ImGuiTreeNodeFlags_DefaultOpen)) draw_inspector_section(s);
+    ImGui::PopItemWidth();
+}
+
+void draw_analysis_panel(LabSession& s) {
+    if (!s.experiment) return;
+    if (!ImGui::BeginTabBar("##analysis")) return;
+    if (ImGui::BeginTabItem("Compare")) {
+        draw_compare_tab(s);
+        ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Events")) {
+        draw_events_tab(s);
+        ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Energy ledger")) {
+        draw_ledger_tab(s);
+        ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Accuracy")) {
+        draw_accuracy_tab(s);
+        ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Stability")) {
+        draw_stability_tab(s);
+        ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Advise")) {
+        draw_advise_tab(s);
+        ImGui::EndTabItem();
+    }
+    const std::size_t warnings = warning_count(s);
+    const std::string warnings_tab = warnings ? "Warnings (" + std::to_string(warnings) + ")###warnings" : "Warnings###warnings";
+    if (warnings) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    const bool open = ImGui::BeginTabItem(warnings_tab.c_str());
+    if (warnings) ImGui::PopStyleColor();
+    if (open) {
+        draw_warnings_tab(s);
+        ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+}
+
+void draw_status_bar(LabSession& s) {
+    const ImVec4 warn{1.0f, 0.75f, 0.3f, 1.0f};
+    const double t = s.experiment ? s.experiment->time() : 0.0;
+    auto separator = [] {
+        ImGui::SameLine();
+        ImGui::TextDisabled("|");
+        ImGui::SameLine();
+    };
+    ImGui::Text("t = %.3f s", t);
+    separator();
+    if (s.paused) ImGui::TextUnformatted("paused");
+    else ImGui::Text("%.2fx real time", s.frame.real_time_factor);
+    separator();
+    ImGui::Text("%llu substeps/frame", static_cast<unsigned long long>(s.frame.substeps));
+    separator();
+    ImGui::Text("physics %.2f ms/frame", s.frame.physics_ms);
+    separator();
+    ImGui::Text("%.0f FPS", s.frame.fps);
+    const std::size_t warnings = warning_count(s);
+    separator();
+    if (warnings) ImGui::TextColored(warn, "%zu warning%s", warnings, warnings == 1 ? "" : "s");
+    else ImGui::TextDisabled("no warnings");
+    if (s.frame.behind) {
+        separator();
+        ImGui::TextColored(warn, "behind real time");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Physics cannot keep up at this time scale: steps were dropped this frame.\n"
+                              "The trajectory is unaffected; only the pace is slower than asked.");
+    }
+    if (s.dirty) {
+        separator();
+        ImGui::TextColored(warn, "* unsaved");
+    }
+    if (!s.status_message.empty()) {
+        separator();
+        ImGui::TextDisabled("%s", s.status_message.c_str());
+    }
+}
+
+namespace {
+
+void error_modal(LabSession& s) {
+    const bool open = ImGui::IsPopupOpen("Error##modal");
+    if (!s.error_popup.empty() && !open) ImGui::OpenPopup("Error##modal");
+    const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(360, 0), ImVec2(ImGui::GetMainViewport()->Size.x * 0.8f, ImGui::GetMainViewport()->Size.y * 0.8f));
+    if (!ImGui::BeginPopupModal("Error##modal", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (s.error_popup.empty()) {  // closed from elsewhere (Esc)
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    ImGui::PushTextWrapPos(ImGui::GetMainViewport()->Size.x * 0.7f);
+    ImGui::TextUnformatted(s.error_popup.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::Separator();
+    if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
+        s.error_popup.clear();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SetItemDefaultFocus();
+    ImGui::EndPopup();
+}
+
+void quit_prompt(LabSession& s) {
+    const bool open = ImGui::IsPopupOpen("Unsaved changes##quit");
+    if (s.confirm_quit && !open) ImGui::OpenPopup("Unsaved changes##quit");
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Unsaved changes##quit", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!s.confirm_quit) {
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    ImGui::Text("\"%s\" has unsaved changes.", s.scene.name.c_str());
+    ImGui::TextDisabled("%s", s.preset_path.empty() ? "It was never saved." : s.preset_path.string().c_str());
+    ImGui::Separator();
+    const bool can_save = !s.preset_path.empty();
+    ImGui::BeginDisabled(!can_save);
+    if (ImGui::Button("Save and quit")) {
+        if (save_scene_to(s, s.preset_path)) s.requests.quit = true;
+        s.confirm_quit = false;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Quit without saving")) {
+        s.requests.quit = true;
+        s.confirm_quit = false;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+        s.confirm_quit = false;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SetItemDefaultFocus();
+    ImGui::EndPopup();
+}
+
+void help_overlay(LabSession& s) {
+    if (!s.show_help) return;
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(vp->GetCenter(), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    if (!ImGui::Begin("Keys and mouse (F1 or H to close)", &s.show_help,
+                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
+        ImGui::End();
+        return;
+    }
+    static const char* rows[][2] = {
+        {"Space", "play / pause"},
+        {"N", "one step (pauses)"},
+        {"R", "reset to the preset's initial state"},
+        {"L", "launch particle 0 again with the Launch panel's velocity"},
+        {"W A S D", "move the camera forward / left / back / right"},
+        {"Q E", "move the camera down / up"},
+        {"left drag", "orbit the camera around the room"},
+        {"right or middle drag", "pan"},
+        {"mouse wheel", "zoom the 3D view; over a plot: zoom time"},
+        {"click a particle", "select it for the inspector and the plots"},
+        {"1 2 3 (shift: other side)", "look along x / y / z"},
+        {"0", "reset the view"},
+        {"F", "focus the selected particle"},
+        {"F1 or H", "this help"},
+        {"Esc", "close dialogs"},
+        {"Ctrl+Q", "quit (asks if there are unsaved changes)"},
+        {"plots: drag", "scroll back in time (stops following)"},
+        {"plots: double-click", "follow the latest samples again"},
+        {"plots: legend click", "hide / show a series"},
+        {"plots: right-click", "export CSV or PNG, fit options"},
+    };
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+        for (const auto& r : rows) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "%s", r[0]);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(r[1]);
+        }
+        ImGui::EndTable();
+    }
+    if (ImGui::Button("Close")) s.show_help = false;
+    ImGui::End();
+}
+
+}  // namespace
+
+void draw_popups(LabSession& s) {
+    help_overlay(s);
+    quit_prompt(s);
+    error_modal(s);
+}
+
+}  // namespace pl::ui

@@ -1,0 +1,22 @@
+// The lab's panels. The app shell creates the windows (fixed layout) and calls these between
+// ImGui::Begin/End; each draws contents only (it may open child windows and popups).
+#pragma once
+
+#include "ui/lab_session.hpp"
+
+namespace pl::ui {
+
+// Call once per frame after physics stepping: appends plot samples and takes the new events
+// (drains Simulation::events() of every variant).
+void record_frame(LabSession&);
+// Optional, after every base step (the shell's after_step hook, also inside single step and run
+// to the next event): makes the live comparison metrics exact (apex, range at the first impact
+// need every step) and samples the plots finely. Without it they are sampled once per frame.
+void record_step(LabSession&);
+void draw_control_panel(LabSession&);   // left column: preset, time, launch, scene, variants, inspector
+void draw_plots_panel(LabSession&);     // height / speed / kinetic energy / energy ledger plots
+void draw_analysis_panel(LabSession&);  // bottom tabs: compare, events, ledger, accuracy, stability, advise, warnings
+void draw_status_bar(LabSession&);      // one line
+void draw_popups(LabSession&);          // error modal, help overlay, unsaved-changes prompt
+
+}  // namespace pl::ui

@@ -1,0 +1,90 @@
+// What the panels remember between frames (LabSession::panels): view settings, edits in
+// progress, and the background studies.
+#pragma once
+
+#include "physics/accuracy_study.hpp"
+#include "physics/advisor.hpp"
+#include "physics/metrics.hpp"
+#include "physics/stability_study.hpp"
+#include "ui/background_job.hpp"
+#include "ui/field_edit.hpp"
+#include "ui/lab_session.hpp"
+#include "ui/plot.hpp"
+
+#include <filesystem>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace pl::ui {
+
+struct PresetEntry {
+    std::filesystem::path path;
+    std::string name;  // file stem
+    bool shipped = false;
+};
+
+// A plot picture waits a frame or two so the menu that asked for it is gone from the screen.
+struct PendingPicture {
+    int frames_left = -1;  // < 0: none
+    std::filesystem::path path;
+    ImVec2 min, max;
+};
+
+struct StabilitySettings {
+    Method method = Method::semi_implicit_euler;
+    std::vector<double> dts, stiffnesses;
+};
+
+struct StabilityMap {
+    StabilitySettings settings;
+    std::vector<StabilityCell> cells;  // dts outer, stiffnesses inner
+    std::vector<StabilityLimit> limits;
+    bool cancelled = false;
+};
+
+struct PanelState {
+    // ---- plots
+    plot::TimeAxisLink time_axis;
+    std::set<std::string> hidden_series;
+    bool show_event_markers = true;
+    int plots_tab = 0;
+    std::string export_stem = "particle-lab";  // files go to <cwd>/<stem>-<plot>.csv/.png
+    PendingPicture picture;
+
+    // ---- control panel
+    FieldEdits fields;
+    const void* edits_experiment = nullptr;  // refused edits are dropped when the scene is replaced
+    std::vector<PresetEntry> presets;
+    bool presets_scanned = false;
+    int preset_choice = -1;
+    std::string save_as_name;
+    std::string open_path;
+    double launch_speed = 0.0, launch_elevation_deg = 0.0, launch_azimuth_deg = 0.0;
+    bool launch_from_velocity = true;  // derive the three from session.launch_velocity once
+    std::unordered_map<ImGuiID, std::string> text_buffers;  // text fields (name, labels) being typed
+    ImGuiID text_editing = 0;
+
+    // ---- analysis
+    int baseline_variant = 0;
+    int compare_mode = 0;  // 0: live, 1: timed run
+    bool compare_differences = false;
+    bool events_follow = true;
+    int events_variant_filter = -1;  // -1: all
+    BackgroundJob<Comparison> timed_compare;
+    double timed_compare_duration_s = 5.0;
+    BackgroundJob<AccuracyReport> accuracy;
+    double accuracy_duration_s = 2.0;
+    int accuracy_cost_axis = 0;   // 0: force evaluations, 1: wall time per simulated second
+    int accuracy_error_axis = 0;  // 0: position, 1: velocity, 2: bounce time
+    const void* accuracy_experiment = nullptr;  // the experiment the study was started on
+    BackgroundJob<StabilityMap> stability;
+    BackgroundJob<Advice> advice;
+    double advice_tolerance_m = 1e-3;
+    const void* advice_experiment = nullptr;
+};
+
+PanelState& panels_of(LabSession& s);
+
+}  // namespace pl::ui

@@ -1,0 +1,135 @@
+// The plot widget's pure math: "nice" axis ticks and per-pixel-column decimation. No ImGui, so
+// the unit tests include it directly.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace pl::ui {
+
+// A step of 1, 2 or 5 times a power of ten that cuts `span` into about `target` intervals
+// (Heckbert, "Nice numbers for graph labels", Graphics Gems, 1990). 0 for an empty span.
+inline double nice_step(double span, int target) {
+    if (!(span > 0.0) || !std::isfinite(span) || target < 1) return 0.0;
+    const double raw = span / target;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    const double fraction = raw / magnitude;  // in [1, 10)
+    const double mantissa = fraction < 1.5 ? 1.0 : fraction < 3.5 ? 2.0 : fraction < 7.5 ? 5.0 : 10.0;
+    return mantissa * magnitude;
+}
+
+struct Ticks {
+    std::vector<double> values;  // ascending, every one inside [lo, hi]
+    double step = 0.0;
+};
+
+// Multiples of nice_step(hi - lo, target) inside [lo, hi]. Each value is k * step (not a running
+// sum, which would accumulate rounding), and values within rounding of zero are exactly 0.
+inline Ticks nice_ticks(double lo, double hi, int target) {
+    Ticks ticks;
+    if (!(hi > lo)) return ticks;
+    ticks.step = nice_step(hi - lo, target);
+    if (ticks.step == 0.0) return ticks;
+    const double slack = 1e-9;  // admit a tick that sits on an end up to rounding
+    const double first = std::ceil(lo / ticks.step - slack);
+    const double last = std::floor(hi / ticks.step + slack);
+    if (last - first > 1000.0) return ticks;  // cannot happen for a sane target; stay bounded
+    for (double k = first; k <= last; k += 1.0) {
+        const double v = k * ticks.step;
+        ticks.values.push_back(std::abs(v) < ticks.step * slack ? 0.0 : v);
+    }
+    return ticks;
+}
+
+// Powers of ten inside [lo, hi] (lo > 0), plus 2x and 5x when fewer than three decades show.
+inline Ticks log_ticks(double lo, double hi) {
+    Ticks ticks;
+    if (!(lo > 0.0) || !(hi > lo) || !std::isfinite(hi)) return ticks;
+    const int first = static_cast<int>(std::floor(std::log10(lo)));
+    const int last = static_cast<int>(std::ceil(std::log10(hi)));
+    const bool fine = last - first < 3;
+    for (int e = first; e <= last && ticks.values.size() < 200; ++e) {
+        const double decade = std::pow(10.0, e);
+        for (double m : {1.0, 2.0, 5.0}) {
+            if (m != 1.0 && !fine) continue;
+            const double v = m * decade;
+            if (v >= lo * (1 - 1e-12) && v <= hi * (1 + 1e-12)) ticks.values.push_back(v);
+        }
+    }
+    ticks.step = 10.0;
+    return ticks;
+}
+
+// A tick label with just enough digits to tell neighbouring ticks `step` apart: fixed notation
+// for ordinary magnitudes, scientific for very small steps or very large values.
+inline std::string format_tick(double value, double step) {
+    char buf[48];
+    if (value == 0.0) return "0";
+    const double mag = std::abs(value);
+    if (step > 0.0 && step >= 1e-4 && mag < 1e6) {
+        const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+        std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+    } else {
+        // Digits after the point in the mantissa: as many as the step needs relative to the value.
+        int digits = 0;
+        if (step > 0.0) digits = std::clamp(static_cast<int>(std::floor(std::log10(mag)) - std::floor(std::log10(step) + 1e-9)), 0, 6);
+        std::snprintf(buf, sizeof buf, "%.*e", digits, value);
+    }
+    return buf;
+}
+
+struct PlotPoint {
+    double x, y;  // y is NaN at a gap (a non-finite sample): the line breaks there
+};
+
+// Reduces the samples with x in [x_lo, x_hi] (xs ascending), plus one neighbour on each side so
+// the line reaches the plot's edges, to at most four points per pixel column: the column's
+// first, lowest, highest and last sample in time order (the "M4" aggregation of Jugel et al.,
+// VLDB 2014). A line through them rasterises like a line through every sample, but costs
+// O(columns) to draw however many samples there are; extremes are never lost.
+inline void decimate_m4(const double* xs, const double* ys, std::size_t n, double x_lo, double x_hi, int columns,
+                        std::vector<PlotPoint>& out) {
+    out.clear();
+    if (n == 0 || !(x_hi > x_lo) || columns < 1) return;
+    std::size_t begin = static_cast<std::size_t>(std::lower_bound(xs, xs + n, x_lo) - xs);
+    std::size_t end = static_cast<std::size_t>(std::upper_bound(xs, xs + n, x_hi) - xs);
+    if (begin > 0) --begin;
+    if (end < n) ++end;
+    if (begin >= end) return;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (end - begin <= static_cast<std::size_t>(4 * columns)) {
+        for (std::size_t i = begin; i < end; ++i) out.push_back({xs[i], std::isfinite(ys[i]) ? ys[i] : nan});
+        return;
+    }
+    const double per_column = columns / (x_hi - x_lo);
+    auto column_of = [&](double x) { return static_cast<long>(std::floor((x - x_lo) * per_column)); };
+    std::size_t i = begin;
+    while (i < end) {
+        if (!std::isfinite(ys[i])) {
+            out.push_back({xs[i], nan});
+            ++i;
+            continue;
+        }
+        const long column = column_of(xs[i]);
+        std::size_t first = i, last = i, lowest = i, highest = i;
+        for (++i; i < end && std::isfinite(ys[i]) && column_of(xs[i]) == column; ++i) {
+            last = i;
+            if (ys[i] < ys[lowest]) lowest = i;
+            if (ys[i] > ys[highest]) highest = i;
+        }
+        std::size_t picks[4] = {first, std::min(lowest, highest), std::max(lowest, highest), last};
+        std::size_t previous = n;  // no index yet
+        for (std::size_t p : picks) {
+            if (p == previous) continue;
+            out.push_back({xs[p], ys[p]});
+            previous = p;
+        }
+    }
+}
+
+}  // namespace pl::ui

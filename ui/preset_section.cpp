@@ -1,0 +1,143 @@
+#include "physics/preset_io.hpp"
+#include "ui/panel_state.hpp"
+#include "ui/sections.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <system_error>
+
+namespace pl::ui {
+namespace {
+
+void scan_folder(const std::filesystem::path& dir, bool shipped, std::vector<PresetEntry>& out) {
+    std::error_code ec;
+    if (dir.empty() || !std::filesystem::is_directory(dir, ec)) return;
+    std::vector<PresetEntry> found;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        if (entry.path().extension() != ".json" || !entry.is_regular_file(ec)) continue;
+        found.push_back({entry.path(), entry.path().stem().string(), shipped});
+    }
+    std::sort(found.begin(), found.end(), [](const PresetEntry& a, const PresetEntry& b) { return a.name < b.name; });
+    out.insert(out.end(), found.begin(), found.end());
+}
+
+void rescan(LabSession& s, PanelState& p) {
+    p.presets.clear();
+    // Without the shipped folder, the folder of the preset that opened is the next best thing.
+    scan_folder(!s.preset_dir.empty() ? s.preset_dir : s.preset_path.parent_path(), true, p.presets);
+    scan_folder(user_preset_dir(), false, p.presets);
+    p.presets_scanned = true;
+    p.preset_choice = -1;
+    for (std::size_t i = 0; i < p.presets.size(); ++i) {
+        std::error_code ec;
+        if (!s.preset_path.empty() && std::filesystem::equivalent(p.presets[i].path, s.preset_path, ec))
+            p.preset_choice = static_cast<int>(i);
+    }
+}
+
+// A name for "save as": letters, digits, '-', '_', '.', space; no path separators.
+std::string bad_name_reason(const std::string& name) {
+    if (name.empty()) return "type a name first";
+    if (name.size() > 100) return "name: at most 100 characters";
+    if (name == "." || name == "..") return "name: not a file name";
+    for (char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' || c == ' '))
+            return std::string("name: only letters, digits, space, '-', '_' and '.' (found '") + c + "')";
+    return {};
+}
+
+}  // namespace
+
+std::filesystem::path user_preset_dir() {
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "particle-lab" / "presets";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::filesystem::path(home) / ".config" / "particle-lab" / "presets";
+    return {};
+}
+
+bool save_scene_to(LabSession& s, const std::filesystem::path& file) {
+    const SaveResult r = save_preset(file, s.scene);
+    if (!r.ok) {
+        s.error_popup = "Could not save " + file.string() + ":\n" + r.error + "\nNothing was lost: the scene is still open.";
+        return false;
+    }
+    s.preset_path = file;
+    s.dirty = false;
+    s.status_message = "Saved " + file.string();
+    return true;
+}
+
+void draw_preset_section(LabSession& s) {
+    PanelState& p = panels_of(s);
+    if (!p.presets_scanned) rescan(s, p);
+
+    ImGui::Text("%s%s", s.scene.name.c_str(), s.dirty ? " *" : "");
+    if (s.dirty && ImGui::IsItemHovered()) ImGui::SetTooltip("Unsaved changes");
+    ImGui::TextDisabled("%s", s.preset_path.empty() ? "(not saved yet)" : s.preset_path.filename().string().c_str());
+    if (ImGui::IsItemHovered() && !s.preset_path.empty()) ImGui::SetTooltip("%s", s.preset_path.string().c_str());
+
+    const float list_h = ImGui::GetTextLineHeightWithSpacing() * 7.5f;
+    if (ImGui::BeginListBox("##presets", ImVec2(-1.0f, list_h))) {
+        bool user_header = false;
+        for (std::size_t i = 0; i < p.presets.size(); ++i) {
+            const PresetEntry& e = p.presets[i];
+            if (!e.shipped && !user_header) {
+                ImGui::TextDisabled("your presets");
+                user_header = true;
+            }
+            const bool selected = p.preset_choice == static_cast<int>(i);
+            if (ImGui::Selectable((e.name + "##" + std::to_string(i)).c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
+                p.preset_choice = static_cast<int>(i);
+                if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) s.load(e.path);
+            }
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n(double-click to load)", e.path.string().c_str());
+        }
+        if (p.presets.empty()) ImGui::TextDisabled("no presets found");
+        ImGui::EndListBox();
+    }
+    const bool chosen = p.preset_choice >= 0 && p.preset_choice < static_cast<int>(p.presets.size());
+    ImGui::BeginDisabled(!chosen);
+    if (ImGui::Button("Load") && chosen) s.load(p.presets[static_cast<std::size_t>(p.preset_choice)].path);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(s.preset_path.empty());
+    if (ImGui::Button("Save")) save_scene_to(s, s.preset_path);
+    ImGui::SameLine();
+    if (ImGui::Button("Revert")) {
+        if (s.load(s.preset_path)) s.status_message = "Reverted to " + s.preset_path.filename().string();
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Rescan")) rescan(s, p);
+
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Save as").x - ImGui::GetStyle().ItemSpacing.x - ImGui::GetStyle().FramePadding.x * 2);
+    ImGui::InputTextWithHint("##save_as", "name for your copy", &p.save_as_name);
+    ImGui::SameLine();
+    const std::string reason = bad_name_reason(p.save_as_name);
+    if (ImGui::Button("Save as")) {
+        if (!reason.empty()) {
+            s.error_popup = "Save as: " + reason;
+        } else {
+            std::error_code ec;
+            const std::filesystem::path dir = user_preset_dir();
+            if (dir.empty()) s.error_popup = "Save as: no home folder to keep your presets in (HOME is not set)";
+            else if (std::filesystem::create_directories(dir, ec); ec)
+                s.error_popup = "Save as: cannot create " + dir.string() + ": " + ec.message();
+            else if (save_scene_to(s, dir / (p.save_as_name + ".json")))
+                rescan(s, p);
+        }
+    }
+    if (!p.save_as_name.empty() && !reason.empty()) ImGui::TextColored({1.0f, 0.42f, 0.42f, 1.0f}, "%s", reason.c_str());
+    ImGui::TextDisabled("saves to %s", user_preset_dir().string().c_str());
+
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - ImGui::GetStyle().ItemSpacing.x - ImGui::GetStyle().FramePadding.x * 2);
+    const bool enter = ImGui::InputTextWithHint("##open", "path/to/preset.json", &p.open_path, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if ((ImGui::Button("Open") || enter) && !p.open_path.empty()) s.load(p.open_path);
+}
+
+}  // namespace pl::ui

@@ -1,0 +1,33 @@
+// The parts of the lab's panels, one file each; lab_ui.cpp puts them together.
+#pragma once
+
+#include "ui/lab_session.hpp"
+
+namespace pl::ui {
+
+// Control panel
+void draw_preset_section(LabSession& s);
+void draw_time_section(LabSession& s);
+void draw_launch_section(LabSession& s);
+void draw_scene_section(LabSession& s);
+void draw_variants_section(LabSession& s);
+void draw_inspector_section(LabSession& s);
+
+// Analysis tabs
+void draw_compare_tab(LabSession& s);
+void draw_events_tab(LabSession& s);
+void draw_ledger_tab(LabSession& s);
+void draw_accuracy_tab(LabSession& s);
+void draw_stability_tab(LabSession& s);
+void draw_advise_tab(LabSession& s);
+void draw_warnings_tab(LabSession& s);
+
+// Shared bits
+std::string variant_name(const LabSession& s, std::size_t v);  // label, or "variant N"
+std::size_t warning_count(const LabSession& s);
+// Saves the scene to `file`; false (and an error dialog) when it cannot.
+bool save_scene_to(LabSession& s, const std::filesystem::path& file);
+// The user's own presets: $XDG_CONFIG_HOME/particle-lab/presets or ~/.config/particle-lab/presets.
+std::filesystem::path user_preset_dir();
+
+}  // namespace pl::ui
