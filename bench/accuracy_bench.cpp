@@ -55,6 +55,7 @@ struct Setting {
 struct Plan {
     Vec3 reference{0.0};
     Setting dopri_6, dopri_9;  // loosest tolerances reaching 1e-6 m and 1e-9 m
+    Setting dopri_grid;        // as the GUI runs it: inside fixed 2 ms steps, rtol = atol = 1e-6
     Setting euler_default;     // semi-implicit Euler at the default dt = 2 ms
     Setting euler_6;           // semi-implicit Euler at the dt that reaches 1e-6 m
 };
@@ -82,6 +83,7 @@ const Plan& plan() {
         q.reference = run(Method::rk4, 1e-5, 0.0).position;
         q.dopri_6 = loosest_tolerance_for(1e-6, q.reference);
         q.dopri_9 = loosest_tolerance_for(1e-9, q.reference);
+        q.dopri_grid = measure(Method::dopri5, 0.002, 1e-6, q.reference);
         q.euler_default = measure(Method::semi_implicit_euler, 0.002, 0.0, q.reference);
         // First order: the error scales with dt. Aim 10% below the target, then check.
         double dt = 0.002 * 0.9e-6 / q.euler_default.error_m;
@@ -115,6 +117,7 @@ void register_setting(const std::string& name, Method method, const Setting& (*p
 void register_accuracy_benchmarks() {
     register_setting("accuracy/dopri5/to:1e-6", Method::dopri5, []() -> const Setting& { return plan().dopri_6; });
     register_setting("accuracy/dopri5/to:1e-9", Method::dopri5, []() -> const Setting& { return plan().dopri_9; });
+    register_setting("accuracy/dopri5/dt:2ms", Method::dopri5, []() -> const Setting& { return plan().dopri_grid; });
     register_setting("accuracy/semi_implicit_euler/dt:2ms", Method::semi_implicit_euler,
                      []() -> const Setting& { return plan().euler_default; });
     register_setting("accuracy/semi_implicit_euler/to:1e-6", Method::semi_implicit_euler,

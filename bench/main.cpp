@@ -20,7 +20,8 @@ namespace pl::bench {
 namespace {
 
 struct Measured {
-    std::vector<double> rates;            // particle-steps per second, one per repetition
+    std::vector<double> rates;            // particle-steps per second of wall time, one per repetition
+    std::vector<double> cpu_rates;        // the same per second of this process's CPU time
     std::vector<double> seconds_per_run;  // wall time per iteration
     std::map<std::string, double> counters;
 };
@@ -39,8 +40,17 @@ public:
         ConsoleReporter::ReportRuns(runs);
         for (const Run& r : runs) {
             if (r.error_occurred || r.run_type != Run::RT_Iteration || r.iterations == 0) continue;
-            Measured& m = results_[r.run_name.function_name];
-            if (const auto it = r.counters.find(rate_counter); it != r.counters.end()) m.rates.push_back(it->second.value);
+            const std::string& name = r.run_name.function_name;
+            Measured& m = results_[name];
+            if (const auto it = r.counters.find(rate_counter); it != r.counters.end()) {
+                m.rates.push_back(it->second.value);
+                if (r.cpu_accumulated_time > 0.0)
+                    m.cpu_rates.push_back(it->second.value * r.real_accumulated_time / r.cpu_accumulated_time);
+            }
+            if (name.find("/threads:") == std::string::npos || name.find("/threads:1") != std::string::npos) {
+                single_thread_cpu_ += r.cpu_accumulated_time;
+                single_thread_real_ += r.real_accumulated_time;
+            }
             m.seconds_per_run.push_back(r.real_accumulated_time / static_cast<double>(r.iterations));
             for (const auto& [name, counter] : r.counters) m.counters[name] = counter.value;
         }
@@ -51,6 +61,14 @@ public:
         if (it == results_.end() || it->second.rates.empty()) return std::nullopt;
         return median(it->second.rates);
     }
+    std::optional<double> cpu_rate(const std::string& name) const {
+        const auto it = results_.find(name);
+        if (it == results_.end() || it->second.cpu_rates.empty()) return std::nullopt;
+        return median(it->second.cpu_rates);
+    }
+    // CPU time over wall time of the single-threaded runs: below 1 when other processes
+    // competed for the cores while the benchmarks ran.
+    double cpu_share() const { return single_thread_real_ > 0.0 ? single_thread_cpu_ / single_thread_real_ : 1.0; }
     const Measured* find(const std::string& name) const {
         const auto it = results_.find(name);
         return it == results_.end() ? nullptr : &it->second;
@@ -58,6 +76,7 @@ public:
 
 private:
     std::map<std::string, Measured> results_;
+    double single_thread_cpu_ = 0.0, single_thread_real_ = 0.0;
 };
 
 std::string rate_text(std::optional<double> r) { return r ? fmt::format("{:.3g}", *r) : "-"; }
@@ -93,6 +112,25 @@ void print_comparison(const CollectingReporter& r, int all_threads) {
                    ratio_text(kernel, limit), ratio_text(engine, baseline), ratio_text(limit, baseline),
                    rate_text(engine_all), ratio_text(engine_all, engine, "x"), rate_text(kernel_all),
                    ratio_text(kernel_all, kernel, "x"));
+    }
+    const double share = r.cpu_share();
+    if (share > 0.9) return;
+    fmt::print("\nThe machine was busy: single-threaded runs got {:.0f}% of a core, so the rates above are low and "
+               "noisy.\nSingle-thread rates and ratios per second of CPU time (threaded runs cannot be corrected):\n\n",
+               100.0 * share);
+    fmt::print("| n | engine | kernel | hand-fused limit | OO baseline | engine/limit | kernel/limit | engine/baseline | "
+               "limit/baseline |\n");
+    fmt::print("|---|---|---|---|---|---|---|---|---|\n");
+    for (std::size_t n : sizes) {
+        const std::string size = size_label(n);
+        const auto engine = r.cpu_rate("engine/drag_walls/n:" + size + "/threads:1");
+        const auto kernel = r.cpu_rate("kernel/drag_walls/n:" + size + "/threads:1");
+        const auto limit = r.cpu_rate("limit_hand_fused/drag_walls/n:" + size);
+        const auto baseline = r.cpu_rate("baseline_oo/drag_walls/n:" + size);
+        if (!engine && !kernel && !limit && !baseline) continue;
+        fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", size, rate_text(engine), rate_text(kernel),
+                   rate_text(limit), rate_text(baseline), ratio_text(engine, limit), ratio_text(kernel, limit),
+                   ratio_text(engine, baseline), ratio_text(limit, baseline));
     }
 }
 
@@ -145,6 +183,7 @@ void print_methods(const CollectingReporter& r) {
 void print_accuracy(const CollectingReporter& r) {
     const Measured* d6 = r.find("accuracy/dopri5/to:1e-6");
     const Measured* d9 = r.find("accuracy/dopri5/to:1e-9");
+    const Measured* d2 = r.find("accuracy/dopri5/dt:2ms");
     const Measured* e2 = r.find("accuracy/semi_implicit_euler/dt:2ms");
     const Measured* e6 = r.find("accuracy/semi_implicit_euler/to:1e-6");
     if (!d6 && !d9 && !e2 && !e6) return;
@@ -165,6 +204,7 @@ void print_accuracy(const CollectingReporter& r) {
     row("semi-implicit Euler to 1e-6 m", e6, false);
     row("dopri5 to 1e-6 m", d6, true);
     row("dopri5 to 1e-9 m", d9, true);
+    row("dopri5 inside the default 2 ms steps", d2, true);
     if (e6 && d6)
         fmt::print("\nTo reach 1e-6 m, semi-implicit Euler costs {:.0f}x what adaptive Dormand-Prince costs.\n",
                    median(e6->seconds_per_run) / median(d6->seconds_per_run));

@@ -25,9 +25,9 @@ struct AccuracyOptions {
     // Run dopri5 over the dt ladder as a fixed-step method (IntegratorSettings::adaptive =
     // false) instead of over the tolerance ladder.
     bool dopri5_fixed_step = false;
-    // Adaptive runs (dopri5 over tolerances, and the reference) use this outer step, so the
-    // error control, not the fixed step, sets their internal step size.
-    double adaptive_outer_dt_s = 0.1;
+    // Outer step of the adaptive runs (dopri5 over tolerances, and the reference); 0: the whole
+    // duration in one outer step, so the error control alone sets the internal step size.
+    double adaptive_outer_dt_s = 0.0;
     double reference_tolerance = 1e-12;
     std::function<void(double fraction)> progress;  // called from the running thread
     const std::atomic<bool>* cancel = nullptr;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <type_traits>
 
 namespace pl {
 
@@ -24,8 +25,12 @@ FlightState fixed_step(const FlightState& y, double t, double h, const F& f) {
     else return rk4_step(y, t, h, f);
 }
 
-// False for Inf and NaN, like std::isfinite, but a plain compare, so it vectorises.
-inline bool finite_value(double v) { return std::abs(v) <= DBL_MAX; }
+// False if any of them is Inf or NaN, as a plain compare that vectorises (std::isfinite does
+// not). Finite values whose sum overflows also give false: the particle then merely takes the
+// generic path, which decides exactly as it always does.
+inline bool all_finite(double a, double b, double c, double d, double e) {
+    return std::abs(a) + std::abs(b) + std::abs(c) + std::abs(d) + std::abs(e) <= DBL_MAX;
+}
 
 bool finite_state(const FlightState& y) {
     return std::isfinite(y.x.x) && std::isfinite(y.x.y) && std::isfinite(y.x.z) && std::isfinite(y.v.x) &&
@@ -41,11 +46,68 @@ struct RangeOutput {
     ForceCounters counters;
 };
 
+// Methods whose one force evaluation per step is at the step start: for them phase 1 looks the
+// wind up for the whole chunk first (WindField::at is an opaque call), then runs the vector loop.
+template <Flight M, bool HasWind>
+constexpr bool wind_ahead = HasWind && (M == Flight::explicit_euler || M == Flight::semi_implicit_euler);
+
+// Forces<Drag, true> for a particle whose wind w is already known: Forces::operator() computes
+// u = v - w, then everything from u, so still air evaluated at u gives the same bits (u - 0 is
+// u); the wind's work is dot(-c u, w) as there. fast_kernel_test checks the bits.
+template <DragModel Drag>
+struct KnownWindForces {
+    Forces<Drag, false> still_air;
+    Vec3 w{0.0};
+    Derivative operator()(const Vec3& x, const Vec3& v, double t) const {
+        const Vec3 u = v - w;
+        Derivative d = still_air(x, u, t);
+        d.wind_power = glm::dot(-still_air.drag_rate(u) * u, w);
+        return d;
+    }
+};
+
+// The force functor phase 1 uses for one particle, filled in place from scalars: GCC keeps it
+// in registers only if no glm vector or whole functor is copied (the copy of a union-based
+// glm::dvec3 blocks scalarisation, and with it vectorisation).
+template <Flight M, DragModel Drag, bool HasWind>
+using FlightForces = std::conditional_t<wind_ahead<M, HasWind>, KnownWindForces<Drag>, Forces<Drag, HasWind>>;
+
+template <DragModel Drag, bool HasWind>
+void set_forces(Forces<Drag, HasWind>& f, double gx, double gy, double gz, const WindField* wind, double k,
+                double re_scale, double, double, double) {
+    f.gravity.x = gx;
+    f.gravity.y = gy;
+    f.gravity.z = gz;
+    if constexpr (HasWind) f.wind = wind;
+    f.drag = {k, re_scale};
+}
+
+template <DragModel Drag>
+void set_forces(KnownWindForces<Drag>& f, double gx, double gy, double gz, const WindField*, double k,
+                double re_scale, double wx, double wy, double wz) {
+    set_forces(f.still_air, gx, gy, gz, nullptr, k, re_scale, 0.0, 0.0, 0.0);
+    f.w.x = wx;
+    f.w.y = wy;
+    f.w.z = wz;
+}
+
+// Lane masks of phase 1 are 64-bit: a byte-sized value in the vectorised loop would make GCC
+// take 64 particles per iteration (one vector of bytes), spilling the 8-wide double vectors.
+using LaneMask = std::int64_t;
+
+// Which particles of [begin, end) phase 1 must leave alone (resting or frozen).
+void blocked_lanes(const ParticleState& s, std::size_t begin, std::size_t end, LaneMask* blocked) {
+    const std::uint8_t* const resting = s.resting.data();
+    const std::uint8_t* const frozen = s.frozen.data();
+    for (std::size_t i = begin; i < end; ++i) blocked[i - begin] = (resting[i] | frozen[i]) != 0;
+}
+
 // Phase 1 for particles [begin, end): see fast_kernel.hpp. Writes flagged[i - begin] and
 // returns the number of particles it finished.
 template <Flight M, DragModel Drag, bool HasWind>
-[[gnu::flatten]] std::size_t flight_chunk(ParticleState& s, std::size_t begin, std::size_t end, const Forces<Drag, HasWind>& forces,
-                         const RoomBounds& bounds, double t0, double h, std::uint8_t* flagged) {
+[[gnu::flatten]] std::size_t flight_chunk(ParticleState& s, std::size_t begin, std::size_t end,
+                                          const Forces<Drag, HasWind>& forces, const RoomBounds& bounds, double t0,
+                                          double h, const LaneMask* blocked, LaneMask* flagged) {
     // Local copies the stores below provably cannot alias.
     const RoomBounds room = bounds;
     const double gx = forces.gravity.x, gy = forces.gravity.y, gz = forces.gravity.z;
@@ -62,32 +124,38 @@ template <Flight M, DragModel Drag, bool HasWind>
     const double* const radius = s.radius.data();
     const double* const drag_k = s.drag_k.data();
     const double* const re_scale = s.drag_re_scale.data();
-    const std::uint8_t* const resting = s.resting.data();
-    const std::uint8_t* const frozen = s.frozen.data();
+    double wx[fast_chunk], wy[fast_chunk], wz[fast_chunk];
+    if constexpr (wind_ahead<M, HasWind>) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const Vec3 w = wind->at(Vec3(px[i], py[i], pz[i]), t0);
+            wx[i - begin] = w.x;
+            wy[i - begin] = w.y;
+            wz[i - begin] = w.z;
+        }
+    }
     std::size_t finished = 0;
 #pragma GCC ivdep
     for (std::size_t i = begin; i < end; ++i) {
-        // Built per particle from scalars: GCC keeps it in registers only if no glm vector is
-        // copied into it whole (the copy of a union-based glm::dvec3 blocks scalarisation).
-        Forces<Drag, HasWind> f;
-        f.gravity.x = gx;
-        f.gravity.y = gy;
-        f.gravity.z = gz;
-        if constexpr (HasWind) f.wind = wind;
-        f.drag = {drag_k[i], re_scale[i]};
+        double w[3] = {0.0, 0.0, 0.0};
+        if constexpr (wind_ahead<M, HasWind>) {
+            w[0] = wx[i - begin];
+            w[1] = wy[i - begin];
+            w[2] = wz[i - begin];
+        }
+        FlightForces<M, Drag, HasWind> f;
+        set_forces(f, gx, gy, gz, wind, drag_k[i], re_scale[i], w[0], w[1], w[2]);
         FlightState y0;
         y0.x = Vec3(px[i], py[i], pz[i]);
         y0.v = Vec3(vx[i], vy[i], vz[i]);
         const FlightState y1 = fixed_step<M>(y0, t0, h, f);
         const double r = radius[i];
-        // Exactly the generic stepper's "no wall reached" test, wall by wall.
+        // Exactly the generic stepper's "no wall reached" test, wall by wall. It also implies a
+        // finite position (the walls are finite planes), so only the rest is checked below.
         const bool inside = (room.distance(0, y1.x, r) >= 0.0) & (room.distance(1, y1.x, r) >= 0.0) &
                             (room.distance(2, y1.x, r) >= 0.0) & (room.distance(3, y1.x, r) >= 0.0) &
                             (room.distance(4, y1.x, r) >= 0.0) & (room.distance(5, y1.x, r) >= 0.0);
-        const bool finite = finite_value(y1.x.x) & finite_value(y1.x.y) & finite_value(y1.x.z) &
-                            finite_value(y1.v.x) & finite_value(y1.v.y) & finite_value(y1.v.z) &
-                            finite_value(y1.drag_loss) & finite_value(y1.wind_gain);
-        const bool take = inside & finite & ((resting[i] | frozen[i]) == 0);
+        const bool finite = all_finite(y1.v.x, y1.v.y, y1.v.z, y1.drag_loss, y1.wind_gain);
+        const bool take = inside & finite & (blocked[i - begin] == 0);
         px[i] = take ? y1.x.x : px[i];
         py[i] = take ? y1.x.y : py[i];
         pz[i] = take ? y1.x.z : pz[i];
@@ -126,12 +194,13 @@ public:
         if constexpr (M == Flight::none) {
             for (std::size_t i = begin; i < end; ++i) step_generic(i);
         } else {
-            std::uint8_t flagged[fast_chunk];
+            LaneMask blocked[fast_chunk], flagged[fast_chunk];
             for (std::size_t c = begin; c < end; c += fast_chunk) {
                 const std::size_t c_end = std::min(end, c + fast_chunk);
-                fast += flight_chunk<M>(s_, c, c_end, f_, room_, t0_, h_, flagged);
-                for (std::size_t i = c; i < c_end; ++i)
-                    if (flagged[i - c]) step_generic(i);
+                blocked_lanes(s_, c, c_end, blocked);
+                const std::size_t finished = flight_chunk<M>(s_, c, c_end, f_, room_, t0_, h_, blocked, flagged);
+                fast += finished;
+                if (finished < c_end - c) contact_phase(c, c_end, flagged);
             }
         }
         ForceCounters& c = out_.counters;
@@ -154,6 +223,21 @@ public:
     }
 
 private:
+    // Phase 2 for one chunk: the flagged particles, in order, eight flags looked at a time.
+    void contact_phase(std::size_t c, std::size_t c_end, const LaneMask* flagged) {
+        const std::size_t n = c_end - c;
+        std::size_t k = 0;
+        for (; k + 8 <= n; k += 8) {
+            const LaneMask any = flagged[k] | flagged[k + 1] | flagged[k + 2] | flagged[k + 3] | flagged[k + 4] |
+                                 flagged[k + 5] | flagged[k + 6] | flagged[k + 7];
+            if (!any) continue;
+            for (std::size_t j = k; j < k + 8; ++j)
+                if (flagged[j]) step_generic(c + j);
+        }
+        for (; k < n; ++k)
+            if (flagged[k]) step_generic(c + k);
+    }
+
     // The generic kernel's per-particle body (simulation.cpp, step_kernel), operation for operation.
     void step_generic(std::size_t i) {
         if (s_.frozen[i]) return;

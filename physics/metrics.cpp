@@ -1,6 +1,7 @@
 #include "metrics.hpp"
 
 #include "energy.hpp"
+#include "thread_pool.hpp"
 
 #include <fmt/format.h>
 
@@ -173,6 +174,8 @@ Comparison run_comparison(const Scene& scene, const CompareOptions& options) {
     std::vector<MetricsTracker> trackers;
     for (std::size_t v = 0; v < variant_count(scene); ++v) {
         sims.emplace_back(model_for_variant(scene, v), particles);
+        // An explicit count (same results as 0 = all) spares a hardware query on every step.
+        sims.back().set_threads(hardware_threads());
         trackers.push_back(start_metrics(sims.back()));
     }
     using clock = std::chrono::steady_clock;

@@ -29,7 +29,11 @@ void wait_for_change(const std::atomic<std::uint64_t>& a, std::uint64_t old) {
 
 }  // namespace
 
-int hardware_threads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+// Cached: hardware_concurrency() reads /sys on every call, far too slow for once per step.
+int hardware_threads() {
+    static const int n = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return n;
+}
 
 ThreadPool& ThreadPool::shared() {
     static ThreadPool pool;

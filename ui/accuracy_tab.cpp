@@ -94,8 +94,14 @@ void diagram(const AccuracyReport& r, const PanelState& p, const IntegratorSetti
         std::sort(rows.begin(), rows.end(), [&](const AccuracyRow* a, const AccuracyRow* b) {
             return cost_of(*a, p.accuracy_cost_axis) < cost_of(*b, p.accuracy_cost_axis);
         });
-        Curve c{std::string(to_string(static_cast<Method>(key.first))) + (key.second ? " (tolerances)" : ""), {}, {},
-                series_color(key.first)};
+        std::string label = std::string(to_string(static_cast<Method>(key.first))) + (key.second ? " (tol)" : "");
+        for (const MethodOrder& o : r.orders) {
+            if (key.second || o.method != static_cast<Method>(key.first) || !o.observed) continue;
+            char order[48];
+            std::snprintf(order, sizeof order, "  order %.2f", *o.observed);
+            label += order;
+        }
+        Curve c{label, {}, {}, series_color(key.first)};
         for (const AccuracyRow* row : rows) {
             c.xs.push_back(cost_of(*row, p.accuracy_cost_axis));
             c.ys.push_back(error_of(*row, p.accuracy_error_axis));
@@ -108,7 +114,7 @@ void diagram(const AccuracyReport& r, const PanelState& p, const IntegratorSetti
         current_x.push_back(cost_of(row, p.accuracy_cost_axis));
         current_y.push_back(error_of(row, p.accuracy_error_axis));
     }
-    if (!plot::BeginPlot("##work_precision", ImVec2(width, -1), plot::PlotFlags_LogLog)) return;
+    if (!plot::BeginPlot("##work_precision", ImVec2(width, -1), plot::PlotFlags_LogLog | plot::PlotFlags_LegendOutside)) return;
     plot::SetupAxes(cost_labels[p.accuracy_cost_axis], error_labels[p.accuracy_error_axis]);
     for (const Curve& c : curves) {
         const int n = static_cast<int>(c.xs.size());
@@ -172,23 +178,35 @@ void draw_accuracy_tab(LabSession& s) {
     const std::size_t v = std::min<std::size_t>(static_cast<std::size_t>(std::max(0, s.selected_variant)),
                                                 s.experiment->variant_count() - 1);
     const IntegratorSettings& current = s.experiment->run(v).model().integrator;
-    std::string orders;
-    for (const MethodOrder& o : r.orders) {
-        if (!o.observed) continue;
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "%s%s %.2f (%d)", orders.empty() ? "" : ", ", to_string(o.method), *o.observed, o.expected);
-        orders += buf;
-    }
-    ImGui::TextDisabled("%s%s, %s, t = %.3g s. Observed order (expected): %s%s", r.cancelled ? "CANCELLED, " : "",
-                        r.variant_label.empty() ? "scene" : r.variant_label.c_str(), r.reference.c_str(), r.duration_s,
-                        orders.empty() ? "-" : orders.c_str(),
-                        p.accuracy_experiment != s.experiment.get() ? "  (the scene changed since: run again)" : "");
-    const float width = ImGui::GetContentRegionAvail().x * 0.55f;
-    diagram(r, p, current, width);
     ImGui::SameLine();
-    ImGui::BeginGroup();
-    table(r, current);
-    ImGui::EndGroup();
+    ImGui::TextDisabled("%s%s%s", r.cancelled ? "cancelled " : "", "(?)",
+                        p.accuracy_experiment != s.experiment.get() ? "  scene changed: run again" : "");
+    if (ImGui::IsItemHovered()) {
+        std::string orders;
+        for (const MethodOrder& o : r.orders) {
+            char buf[96];
+            if (o.observed) std::snprintf(buf, sizeof buf, "\n  %s: %.2f (expected %d)", to_string(o.method), *o.observed, o.expected);
+            else std::snprintf(buf, sizeof buf, "\n  %s: - (expected %d)", to_string(o.method), o.expected);
+            orders += buf;
+        }
+        ImGui::SetTooltip("%s, particle %zu, errors at t = %.4g s\nreference: %s\nobserved order of the fixed-step methods "
+                          "(log-log slope of error vs dt):%s",
+                          r.variant_label.empty() ? "scene" : r.variant_label.c_str(), r.particle, r.duration_s,
+                          r.reference.c_str(), orders.c_str());
+    }
+    ImGui::SameLine();
+    ImGui::RadioButton("diagram##acc", &p.accuracy_view, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("table##acc", &p.accuracy_view, 1);
+    ImGui::SameLine();
+    ImGui::Checkbox("own window##acc", &p.accuracy_window);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the diagram in a window of its own (movable, resizable)");
+    if (p.accuracy_view == 0) diagram(r, p, current, -1.0f);
+    else table(r, current);
+    if (!p.accuracy_window) return;
+    ImGui::SetNextWindowSize(ImVec2(760, 480), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Work-precision diagram", &p.accuracy_window)) diagram(r, p, current, -1.0f);
+    ImGui::End();
 }
 
 }  // namespace pl::ui

@@ -8,7 +8,7 @@ const ImVec4 refused_text{1.0f, 0.42f, 0.42f, 1.0f};
 
 template <int N>
 std::optional<std::array<double, 3>> input_components(FieldEdits& edits, const char* label, std::array<double, 3> value,
-                                                      const char* format) {
+                                                      const char* format, const char* help) {
     const ImGuiID id = ImGui::GetID(label);
     const auto refused = edits.refused.find(id);
     const auto editing = edits.editing.find(id);
@@ -31,6 +31,7 @@ std::optional<std::array<double, 3>> input_components(FieldEdits& edits, const c
     }
     if (active) edits.editing[id] = shown;
     else edits.editing.erase(id);
+    if (help) help_marker(help);
     if (is_refused) {
         ImGui::PushID(static_cast<int>(id));
         error_text("Not applied: " + refused->second.message);
@@ -50,16 +51,28 @@ void FieldEdits::resolve(const std::string& message) {
     else refused[last_id] = {last_values, message};
 }
 
-std::optional<double> input_number(FieldEdits& edits, const char* label, double value, const char* format) {
-    const auto r = input_components<1>(edits, label, {value, 0.0, 0.0}, format);
+std::optional<double> input_number(FieldEdits& edits, const char* label, double value, const char* format, const char* help) {
+    const auto r = input_components<1>(edits, label, {value, 0.0, 0.0}, format, help);
     if (!r) return std::nullopt;
     return (*r)[0];
 }
 
-std::optional<Vec3> input_vec3(FieldEdits& edits, const char* label, const Vec3& value, const char* format) {
-    const auto r = input_components<3>(edits, label, {value.x, value.y, value.z}, format);
+std::optional<Vec3> input_vec3(FieldEdits& edits, const char* label, const Vec3& value, const char* format, const char* help) {
+    const auto r = input_components<3>(edits, label, {value.x, value.y, value.z}, format, help);
     if (!r) return std::nullopt;
     return Vec3((*r)[0], (*r)[1], (*r)[2]);
+}
+
+void help_marker(const char* text) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+        ImGui::TextUnformatted(text);
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
 }
 
 void error_text(const std::string& message) {

@@ -34,8 +34,14 @@ struct FieldEdits {
     }
 };
 
-std::optional<double> input_number(FieldEdits& edits, const char* label, double value, const char* format = "%.6g");
-std::optional<Vec3> input_vec3(FieldEdits& edits, const char* label, const Vec3& value, const char* format = "%.4g");
+// `help`, when given, is a "(?)" tooltip beside the field.
+std::optional<double> input_number(FieldEdits& edits, const char* label, double value, const char* format = "%.6g",
+                                   const char* help = nullptr);
+std::optional<Vec3> input_vec3(FieldEdits& edits, const char* label, const Vec3& value, const char* format = "%.4g",
+                               const char* help = nullptr);
+
+// "(?)" on the same line, with a tooltip.
+void help_marker(const char* text);
 
 // Red text for a rule the current state breaks (used beside inputs, and by the refusal).
 void error_text(const std::string& message);

@@ -90,7 +90,7 @@ void record_event_samples(ParticleTrack& track, const Room& room, const Event& e
 
 // Everything that happened in the variant since the last observation: new events, a relaunch
 // (the shell's L key changes a particle's initial energy), and one metrics observation.
-void observe(LabSession& s, PlotHistory& h, std::size_t v) {
+void observe(LabSession& s, PlotHistory& h, std::size_t v, std::vector<LoggedEvent>& log) {
     Simulation& sim = s.experiment->run(v);
     VariantCursor& c = h.cursors[v];
     const ParticleState& state = sim.state();
@@ -120,7 +120,7 @@ void observe(LabSession& s, PlotHistory& h, std::size_t v) {
     const Room& room = sim.model().room;
     VariantTrack& track = h.variants[v];
     for (const Event& e : fresh) {
-        h.log_event({static_cast<std::uint32_t>(v), e});
+        log.push_back({static_cast<std::uint32_t>(v), e});
         if (e.particle < track.particles.size())
             record_event_samples(track.particles[e.particle], room, e, state.mass[e.particle], state.radius[e.particle]);
     }
@@ -129,7 +129,11 @@ void observe(LabSession& s, PlotHistory& h, std::size_t v) {
 }
 
 void observe_all(LabSession& s, PlotHistory& h) {
-    for (std::size_t v = 0; v < h.variants.size(); ++v) observe(s, h, v);
+    std::vector<LoggedEvent> log;
+    for (std::size_t v = 0; v < h.variants.size(); ++v) observe(s, h, v, log);
+    // Variants are stepped one after the other: interleave their events in time.
+    std::stable_sort(log.begin(), log.end(), [](const LoggedEvent& a, const LoggedEvent& b) { return a.event.t < b.event.t; });
+    for (const LoggedEvent& e : log) h.log_event(e);
     h.source_steps = s.experiment->base_steps();
 }
 

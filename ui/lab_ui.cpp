@@ -152,7 +152,8 @@ void error_modal(LabSession& s) {
 
 void quit_prompt(LabSession& s) {
     const bool open = ImGui::IsPopupOpen("Unsaved changes##quit");
-    if (s.confirm_quit && !open) ImGui::OpenPopup("Unsaved changes##quit");
+    // An error dialog goes first; the question comes back once it is read.
+    if (s.confirm_quit && !open && s.error_popup.empty()) ImGui::OpenPopup("Unsaved changes##quit");
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal("Unsaved changes##quit", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     if (!s.confirm_quit) {

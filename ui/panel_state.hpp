@@ -76,6 +76,10 @@ struct PanelState {
     double timed_compare_duration_s = 5.0;
     BackgroundJob<AccuracyReport> accuracy;
     double accuracy_duration_s = 2.0;
+    int accuracy_view = 0;        // 0: diagram, 1: table
+    bool accuracy_window = false; // the diagram also in a window of its own
+    int stability_view = 0;       // 0: map, 1: limits table
+    bool stability_window = false;
     int accuracy_cost_axis = 0;   // 0: force evaluations, 1: wall time per simulated second
     int accuracy_error_axis = 0;  // 0: position, 1: velocity, 2: bounce time
     const void* accuracy_experiment = nullptr;  // the experiment the study was started on

@@ -3,6 +3,7 @@
 #include "ui/plot_math.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -167,7 +168,14 @@ AxisTicks make_ticks(double lo, double hi, float pixels, float pixels_per_tick, 
     AxisTicks t;
     if (log) {
         const Ticks ticks = log_ticks(std::pow(10.0, lo), std::pow(10.0, hi));
-        for (double v : ticks.values) {
+        // Keep every k-th tick so labels never crowd a short axis.
+        const std::size_t room = std::max<std::size_t>(2, static_cast<std::size_t>(pixels / pixels_per_tick));
+        const std::size_t stride = (ticks.values.size() + room - 1) / room;
+        for (std::size_t i = 0; i < ticks.values.size(); ++i) {
+            const double v = ticks.values[i];
+            const long exponent = std::lround(std::floor(std::log10(v) + 1e-9));
+            if (stride > 1 && (std::abs(v / std::pow(10.0, exponent) - 1.0) > 1e-9 || exponent % static_cast<long>(stride) != 0))
+                continue;
             t.at.push_back(std::log10(v));
             t.labels.push_back(log_label(v));
         }
@@ -231,15 +239,23 @@ std::string visible_csv(const Context& c, double x0, double x1, bool log) {
         x1 = std::pow(10.0, x1);
     }
     std::string out = "series," + csv_field(c.x_label) + "," + csv_field(c.y_label) + "\n";
-    char buf[80];
+    // Shortest form that reads back to the same double.
+    auto append = [&out](double v) {
+        char buf[32];
+        const auto r = std::to_chars(buf, buf + sizeof buf, v);
+        out.append(buf, r.ptr);
+    };
     for (const Item& item : c.items) {
         if (!item_visible(item) || !item.ys || (item.kind != ItemKind::line && item.kind != ItemKind::markers)) continue;
         const std::string name = csv_field(item.legend);
         for (int i = 0; i < item.count; ++i) {
             if (item.xs[i] < x0 || item.xs[i] > x1) continue;
-            std::snprintf(buf, sizeof buf, ",%.17g,%.17g\n", item.xs[i], item.ys[i]);
             out += name;
-            out += buf;
+            out += ',';
+            append(item.xs[i]);
+            out += ',';
+            append(item.ys[i]);
+            out += '\n';
         }
     }
     return out;
@@ -465,6 +481,26 @@ PlotResult EndPlot() {
     }
     if (!(y1 > y0)) y1 = y0 + 1.0;
 
+    // ---- legend entries (one per label), laid out once the plot area is known
+    struct Entry {
+        std::string label;
+        ImU32 color;
+        ImVec2 min, max;
+    };
+    std::vector<Entry> entries;
+    if (!has_flag(PlotFlags_NoLegend)) {
+        for (const Item& item : c.items) {
+            if (item.legend.empty() || item.kind == ItemKind::text) continue;
+            if (std::none_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.label == item.legend; }))
+                entries.push_back({item.legend, item.color, {}, {}});
+        }
+    }
+    const float swatch = line_h * 0.7f, row_h = line_h + 2.0f, padding = 4.0f;
+    float entry_w = 0.0f;
+    for (const Entry& e : entries) entry_w = std::max(entry_w, ImGui::CalcTextSize(e.label.c_str()).x);
+    entry_w += swatch + 3 * padding;
+    const bool legend_outside = has_flag(PlotFlags_LegendOutside) && !entries.empty();
+
     // ---- layout: header (y label, title), plot area, tick labels, x label
     const ImVec2 fmin = c.frame_min;
     const ImVec2 fmax{fmin.x + c.frame_size.x, fmin.y + c.frame_size.y};
@@ -474,7 +510,8 @@ PlotResult EndPlot() {
     const AxisTicks yt = make_ticks(y0, y1, bottom - top, line_h * 2.2f, log);
     float label_w = 0.0f;
     for (const std::string& l : yt.labels) label_w = std::max(label_w, ImGui::CalcTextSize(l.c_str()).x);
-    Frame f{x0, x1, y0, y1, {fmin.x + label_w + 8.0f, top}, {fmax.x - 6.0f, std::max(top + 10.0f, bottom)}};
+    const float right = fmax.x - 6.0f - (legend_outside ? entry_w + 2 * padding : 0.0f);
+    Frame f{x0, x1, y0, y1, {fmin.x + label_w + 8.0f, top}, {std::max(fmin.x + label_w + 20.0f, right), std::max(top + 10.0f, bottom)}};
     const AxisTicks xt = make_ticks(x0, x1, f.max.x - f.min.x, 90.0f, log);
     result.frame_min = fmin;
     result.frame_max = fmax;
@@ -541,30 +578,15 @@ PlotResult EndPlot() {
     dl->PopClipRect();
     dl->AddRect(f.min, f.max, ImGui::GetColorU32(ImGuiCol_Border));
 
-    // ---- legend (top right, in columns when tall)
-    struct Entry {
-        std::string label;
-        ImU32 color;
-        ImVec2 min, max;
-    };
-    std::vector<Entry> entries;
-    if (!has_flag(PlotFlags_NoLegend)) {
-        for (const Item& item : c.items) {
-            if (item.legend.empty() || item.kind == ItemKind::text) continue;
-            if (std::none_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.label == item.legend; }))
-                entries.push_back({item.legend, item.color, {}, {}});
-        }
-    }
+    // ---- legend: top right inside the plot (in columns when tall), or beside it
     if (!entries.empty()) {
-        const float swatch = line_h * 0.7f, row_h = line_h + 2.0f, padding = 4.0f;
-        float entry_w = 0.0f;
-        for (const Entry& e : entries) entry_w = std::max(entry_w, ImGui::CalcTextSize(e.label.c_str()).x);
-        entry_w += swatch + 3 * padding;
-        const int rows_fit = std::max(1, static_cast<int>((f.max.y - f.min.y - 2 * padding) / row_h));
+        const float avail_h = legend_outside ? fmax.y - f.min.y : f.max.y - f.min.y - 2 * padding;
+        const int rows_fit = std::max(1, static_cast<int>(avail_h / row_h));
         const int cols = (static_cast<int>(entries.size()) + rows_fit - 1) / rows_fit;
         const int rows = (static_cast<int>(entries.size()) + cols - 1) / cols;
-        const ImVec2 box_max{f.max.x - padding, f.min.y + padding + rows * row_h + padding};
-        const ImVec2 box_min{box_max.x - cols * entry_w - padding, f.min.y + padding};
+        const float box_right = legend_outside ? fmax.x - 2.0f : f.max.x - padding;
+        const ImVec2 box_max{box_right, f.min.y + (legend_outside ? 0.0f : padding) + rows * row_h + 2 * padding};
+        const ImVec2 box_min{box_max.x - cols * entry_w - padding, f.min.y + (legend_outside ? 0.0f : padding)};
         dl->AddRectFilled(box_min, box_max, ImGui::GetColorU32(ImGuiCol_WindowBg, 0.8f), 3.0f);
         for (std::size_t i = 0; i < entries.size(); ++i) {
             Entry& e = entries[i];
@@ -591,7 +613,8 @@ PlotResult EndPlot() {
     const Entry* over_entry = nullptr;
     for (const Entry& e : entries)
         if (mouse.x >= e.min.x && mouse.x < e.max.x && mouse.y >= e.min.y && mouse.y < e.max.y) over_entry = &e;
-    if (hovered && over_entry && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    const bool legend_clickable = hovered || (legend_outside && ImGui::IsWindowHovered());
+    if (legend_clickable && over_entry && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         if (c.hidden->erase(over_entry->label) == 0) c.hidden->insert(over_entry->label);
     } else if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
         link.follow_latest = true;

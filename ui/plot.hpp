@@ -33,6 +33,7 @@ enum PlotFlags : int {
     PlotFlags_LogLog = 1 << 2,    // both axes logarithmic; fits all data (no follow)
     PlotFlags_FitAll = 1 << 3,    // static data: both axes fit everything, no follow mode
     PlotFlags_ExportCsv = 1 << 4, // this frame, EndPlot returns the visible data as CSV
+    PlotFlags_LegendOutside = 1 << 5,  // legend to the right of the plot area (short, wide plots)
 };
 
 // The x range that stacked plots share (the time axis). Owned by the caller.

@@ -106,8 +106,9 @@ inline void decimate_m4(const double* xs, const double* ys, std::size_t n, doubl
         for (std::size_t i = begin; i < end; ++i) out.push_back({xs[i], std::isfinite(ys[i]) ? ys[i] : nan});
         return;
     }
-    const double per_column = columns / (x_hi - x_lo);
-    auto column_of = [&](double x) { return static_cast<long>(std::floor((x - x_lo) * per_column)); };
+    // Column c holds x in [x_lo + c w, x_lo + (c + 1) w). Its end is found by binary search and
+    // its samples scanned in one tight loop, so the cost per sample is a couple of compares.
+    const double w = (x_hi - x_lo) / columns;
     std::size_t i = begin;
     while (i < end) {
         if (!std::isfinite(ys[i])) {
@@ -115,20 +116,26 @@ inline void decimate_m4(const double* xs, const double* ys, std::size_t n, doubl
             ++i;
             continue;
         }
-        const long column = column_of(xs[i]);
-        std::size_t first = i, last = i, lowest = i, highest = i;
-        for (++i; i < end && std::isfinite(ys[i]) && column_of(xs[i]) == column; ++i) {
-            last = i;
-            if (ys[i] < ys[lowest]) lowest = i;
-            if (ys[i] > ys[highest]) highest = i;
+        const double column = std::floor((xs[i] - x_lo) / w);
+        const double column_end = x_lo + (column + 1.0) * w;
+        std::size_t stop = static_cast<std::size_t>(std::lower_bound(xs + i, xs + end, column_end) - xs);
+        if (stop <= i) stop = i + 1;
+        std::size_t lowest = i, highest = i, last = i;
+        for (std::size_t k = i + 1; k < stop; ++k) {
+            const double y = ys[k];
+            if (!(y == y) || std::isinf(y)) break;  // a gap: the column ends at it
+            last = k;
+            if (y < ys[lowest]) lowest = k;
+            if (y > ys[highest]) highest = k;
         }
-        std::size_t picks[4] = {first, std::min(lowest, highest), std::max(lowest, highest), last};
+        const std::size_t picks[4] = {i, std::min(lowest, highest), std::max(lowest, highest), last};
         std::size_t previous = n;  // no index yet
         for (std::size_t p : picks) {
             if (p == previous) continue;
             out.push_back({xs[p], ys[p]});
             previous = p;
         }
+        i = last + 1;
     }
 }
 

@@ -36,22 +36,19 @@ bool SceneEditor::commit(const std::function<void(Scene&)>& change, bool from_fi
 
 void SceneEditor::number(const char* label, double value, const std::function<void(Scene&, double)>& set,
                          const char* format, const char* help) {
-    const std::optional<double> v = input_number(panels_.fields, label, value, format);
-    if (help) help_marker(help);
+    const std::optional<double> v = input_number(panels_.fields, label, value, format, help);
     if (v) commit([&](Scene& sc) { set(sc, *v); }, true);
 }
 
 void SceneEditor::vec3(const char* label, const Vec3& value, const std::function<void(Scene&, const Vec3&)>& set,
                        const char* format, const char* help) {
-    const std::optional<Vec3> v = input_vec3(panels_.fields, label, value, format);
-    if (help) help_marker(help);
+    const std::optional<Vec3> v = input_vec3(panels_.fields, label, value, format, help);
     if (v) commit([&](Scene& sc) { set(sc, *v); }, true);
 }
 
 void SceneEditor::integer(const char* label, std::uint64_t value, std::uint64_t max, const char* path,
                           const std::function<void(Scene&, std::uint64_t)>& set, const char* help) {
-    const std::optional<double> v = input_number(panels_.fields, label, static_cast<double>(value), "%.0f");
-    if (help) help_marker(help);
+    const std::optional<double> v = input_number(panels_.fields, label, static_cast<double>(value), "%.0f", help);
     if (!v) return;
     if (!(*v >= 0.0 && *v <= static_cast<double>(max) && std::floor(*v) == *v)) {
         panels_.fields.resolve(std::string(path) + ": must be a whole number in [0, " + std::to_string(max) + "], got " +
@@ -77,18 +74,6 @@ void SceneEditor::text(const char* label, const std::string& value,
 }
 
 bool SceneEditor::apply(const std::function<void(Scene&)>& change) { return commit(change, false); }
-
-void help_marker(const char* text) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("(?)");
-    if (ImGui::IsItemHovered()) {
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-        ImGui::TextUnformatted(text);
-        ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
-    }
-}
 
 namespace {
 

@@ -45,7 +45,4 @@ void edit_air_section(SceneEditor& ed, const std::function<Air&(Scene&)>& at);
 void edit_contact_section(SceneEditor& ed, const std::function<ContactSettings&(Scene&)>& at);
 void edit_integrator_section(SceneEditor& ed, const std::function<IntegratorSettings&(Scene&)>& at);
 
-// "(?)" with a tooltip.
-void help_marker(const char* text);
-
 }  // namespace pl::ui

@@ -86,7 +86,7 @@ void draw_map(const LabSession& s, const StabilityMap& m, float width) {
     // k = 0 (no drag) has no place on a log axis: such a setting sits at the left edge.
     double current_k = std::max(sim.max_drag_stiffness(), ks.front()), current_dt = sim.dt();
 
-    if (!plot::BeginPlot("##stability_map", ImVec2(width, -1), plot::PlotFlags_LogLog)) return;
+    if (!plot::BeginPlot("##stability_map", ImVec2(width, -1), plot::PlotFlags_LogLog | plot::PlotFlags_LegendOutside)) return;
     plot::SetupAxes("drag stiffness k (1/s)", "time step dt (s)");
     for (const StabilityCell& c : m.cells) {
         const auto di = static_cast<std::size_t>(std::find(dts.begin(), dts.end(), c.c.dt) - dts.begin());
@@ -154,14 +154,27 @@ void draw_stability_tab(LabSession& s) {
         return;
     }
     const StabilityMap& m = *p.stability.result();
-    if (m.settings.method != method)
-        ImGui::TextDisabled("(map of %s; the current method is %s: compute again)", to_string(m.settings.method), to_string(method));
-    if (m.cancelled) ImGui::TextDisabled("(cancelled: part of the map)");
-    draw_map(s, m, ImGui::GetContentRegionAvail().x * 0.62f);
+    if (m.settings.method != method) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(map of %s: compute again)", to_string(m.settings.method));
+    }
+    if (m.cancelled) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(cancelled: part of the map)");
+    }
     ImGui::SameLine();
-    ImGui::BeginGroup();
-    limits_table(m);
-    ImGui::EndGroup();
+    ImGui::RadioButton("map##stab", &p.stability_view, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("limits##stab", &p.stability_view, 1);
+    ImGui::SameLine();
+    ImGui::Checkbox("own window##stab", &p.stability_window);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the map in a window of its own (movable, resizable)");
+    if (p.stability_view == 0) draw_map(s, m, -1.0f);
+    else limits_table(m);
+    if (!p.stability_window) return;
+    ImGui::SetNextWindowSize(ImVec2(760, 520), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Stability map", &p.stability_window)) draw_map(s, m, -1.0f);
+    ImGui::End();
 }
 
 }  // namespace pl::ui

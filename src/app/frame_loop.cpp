@@ -79,9 +79,9 @@ void smooth(double& average, double sample, double dt) {
     average = average == 0.0 ? sample : average + a * (sample - average);
 }
 
-void dump_state(const GuiOptions& o, const ui::LabSession& s, long frames) {
+void dump_state(const GuiOptions& o, const ui::LabSession& s, long frames, const ViewSnapshot& view) {
     if (!o.dump_state) return;
-    const std::string error = write_state_dump(*o.dump_state, s, frames);
+    const std::string error = write_state_dump(*o.dump_state, s, frames, view);
     if (!error.empty()) std::fprintf(stderr, "particle-lab: --dump-state: %s\n", error.c_str());
 }
 
@@ -123,12 +123,13 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
     ViewDrag drag;
     std::string title = window_title(session);
     long frames = 0;
+    std::vector<ViewPane> shown_panes;  // the last frame's, for the state dump
     Clock::time_point last = Clock::now();
 
     while (true) {
         glfwPollEvents();
         if (quit_signalled() || session.requests.quit) break;
-        if (take_dump_request()) dump_state(options, session, frames);
+        if (take_dump_request()) dump_state(options, session, frames, {view.camera, shown_panes});
         if (glfwWindowShouldClose(window.handle())) {
             glfwSetWindowShouldClose(window.handle(), GLFW_FALSE);
             if (session.dirty) session.confirm_quit = true;
@@ -183,6 +184,7 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         const FramebufferMapping fb{io.DisplaySize.x > 0 ? static_cast<float>(fb_w) / io.DisplaySize.x : 1.0f,
                                     io.DisplaySize.y > 0 ? static_cast<float>(fb_h) / io.DisplaySize.y : 1.0f, fb_h};
         renderer.draw(session, trails, panes, view.camera, fb);
+        shown_panes = panes;
         imgui.render();
 
         ++frames;
@@ -205,7 +207,7 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         }
     }
     if (view.file) save_camera(*view.file, view.camera, view.room);
-    dump_state(options, session, frames);
+    dump_state(options, session, frames, {view.camera, shown_panes});
     return 0;
 }
 

@@ -5,6 +5,7 @@
 #include "physics/energy.hpp"
 #include "physics/metrics.hpp"
 #include "physics/simulation.hpp"
+#include "physics/thread_pool.hpp"
 
 #include <fmt/format.h>
 
@@ -44,6 +45,21 @@ void write_event_rows(CsvWriter& csv, const std::vector<Event>& events, const st
     }
 }
 
+// Warnings are raised once per particle and kind; a big scene can still raise thousands, so at
+// most `per_kind` of each kind are printed, followed by how many more there were.
+void print_warnings(const std::vector<Warning>& warnings, std::FILE* out, const std::string& prefix,
+                    std::size_t per_kind = 10) {
+    std::array<std::size_t, 4> seen{};
+    for (const Warning& w : warnings) {
+        const auto k = static_cast<std::size_t>(w.kind);
+        if (k < seen.size() && seen[k]++ >= per_kind) continue;
+        std::fprintf(out, "%s%s\n", prefix.c_str(), w.message.c_str());
+    }
+    for (std::size_t k = 0; k < seen.size(); ++k)
+        if (seen[k] > per_kind)
+            std::fprintf(out, "%s... and %zu more warnings of this kind (one per particle)\n", prefix.c_str(), seen[k] - per_kind);
+}
+
 void print_summary(const Scene& scene, const std::vector<Simulation>& sims, const std::vector<std::array<std::uint64_t, 5>>& event_counts) {
     std::printf("%s: %zu particle%s, %zu variant%s\n", scene.name.c_str(), sims.front().particle_count(),
                 sims.front().particle_count() == 1 ? "" : "s", sims.size(), sims.size() == 1 ? "" : "s");
@@ -73,7 +89,7 @@ void print_summary(const Scene& scene, const std::vector<Simulation>& sims, cons
             std::printf("; dopri5 internal steps %llu accepted, %llu rejected",
                         static_cast<unsigned long long>(c.accepted_steps), static_cast<unsigned long long>(c.rejected_steps));
         std::printf("\n");
-        for (const Warning& w : sim.warnings()) std::printf("  warning: %s\n", w.message.c_str());
+        print_warnings(sim.warnings(), stdout, "  warning: ");
     }
 }
 
@@ -114,6 +130,7 @@ int run(const RunOptions& o) {
     std::vector<std::string> names;
     for (std::size_t v = 0; v < variant_count(*scene); ++v) {
         sims.emplace_back(model_for_variant(*scene, v), particles);
+        sims.back().set_threads(hardware_threads());  // explicit: no hardware query per step
         names.push_back(variant_name(*scene, v));
     }
     std::vector<std::uint64_t> written_step(sims.size(), 0);
@@ -157,8 +174,7 @@ int run(const RunOptions& o) {
         print_summary(*scene, sims, event_counts);
     } else {
         for (const Simulation& sim : sims)
-            for (const Warning& w : sim.warnings())
-                std::fprintf(stderr, "particle-lab run: warning (%s): %s\n", sim.model().label.c_str(), w.message.c_str());
+            print_warnings(sim.warnings(), stderr, fmt::format("particle-lab run: warning ({}): ", sim.model().label));
     }
     return exit_ok;
 }

@@ -1,0 +1,136 @@
+# Helpers shared by the GUI tests (sourced; not a test itself: CTest runs tests/gui/*.sh).
+# Every test runs under its own X display (tests/gui/with_display.sh) and its own config dir.
+
+set -euo pipefail
+
+# Debian's interpreter when present: a version-manager shim first on PATH can take a second or
+# more per start, and the tests start Python often.
+if [ -x /usr/bin/python3 ]; then PYTHON=/usr/bin/python3; else PYTHON=python3; fi
+
+fail() {
+    echo "FAIL: $*" >&2
+    exit 1
+}
+
+# A scratch directory removed at exit; XDG_CONFIG_HOME inside it so no user settings leak in.
+make_workdir() {
+    WORK=$(mktemp -d)
+    export XDG_CONFIG_HOME="$WORK/config"
+    APP_PID=""
+    trap 'cleanup_app; rm -rf "$WORK"' EXIT
+}
+
+cleanup_app() {
+    if [ -n "${APP_PID:-}" ] && kill -0 "$APP_PID" 2>/dev/null; then
+        kill -TERM "$APP_PID" 2>/dev/null || true
+        wait "$APP_PID" 2>/dev/null || true
+    fi
+}
+
+# Reads a value from a JSON file with a Python expression over `d`, e.g. json_get f 'd["t"]'.
+json_get() {
+    "$PYTHON" -c 'import json, sys; d = json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$1" "$2"
+}
+
+# Checks a Python condition over the JSON file `d`; fails with `message` otherwise.
+json_check() {
+    local file=$1 condition=$2 message=$3
+    "$PYTHON" -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' \
+        "$file" "$condition" || fail "$message (condition: $condition; state: $(head -c 400 "$file"))"
+}
+
+# Prints "width height" of a PNG on the first line, then "stddev distinct_colours" of the
+# brightness for each region given as fractions of the image "x0,y0,x1,y1" (default: all of it).
+# Decoded by stb_image (libstb, linked by the app too) in a small C program built on first use:
+# decoding a 1600x900 PNG in pure Python takes seconds.
+png_stats() {
+    if [ ! -x "$WORK/png_stats" ]; then
+        cc -O2 -std=c11 -I/usr/include/stb -o "$WORK/png_stats" -x c - -lstb -lm <<'C' || fail "cannot build the PNG checker"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <stb_image.h>
+int main(int argc, char** argv) {
+    int w, h, n;
+    unsigned char* px = stbi_load(argv[1], &w, &h, &n, 3);
+    if (!px) { fprintf(stderr, "cannot decode %s\n", argv[1]); return 1; }
+    printf("%d %d\n", w, h);
+    const char* whole = "0,0,1,1";
+    const int regions = argc > 2 ? argc - 2 : 1;
+    for (int r = 0; r < regions; ++r) {
+        double f[4];
+        if (sscanf(argc > 2 ? argv[2 + r] : whole, "%lf,%lf,%lf,%lf", &f[0], &f[1], &f[2], &f[3]) != 4) return 2;
+        int x0 = (int)(f[0] * w), y0 = (int)(f[1] * h), x1 = (int)(f[2] * w), y1 = (int)(f[3] * h);
+        double sum = 0, sum2 = 0, count = 0;
+        static unsigned char seen[1 << 21];  /* 7 bits per channel */
+        for (int i = 0; i < (1 << 21); ++i) seen[i] = 0;
+        long colours = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const unsigned char* p = px + 3 * ((long)y * w + x);
+                double v = (p[0] + p[1] + p[2]) / 3.0;
+                sum += v; sum2 += v * v; count += 1;
+                int key = (p[0] >> 1) << 14 | (p[1] >> 1) << 7 | (p[2] >> 1);
+                if (!seen[key]) { seen[key] = 1; ++colours; }
+            }
+        double mean = sum / count;
+        printf("%.2f %ld\n", sqrt(fmax(sum2 / count - mean * mean, 0.0)), colours);
+    }
+    stbi_image_free(px);
+    return 0;
+}
+C
+    fi
+    "$WORK/png_stats" "$@"
+}
+
+# Starts the app in the background (APP_PID) and waits for its window (APP_WINDOW).
+start_app() {
+    "$APP" "$@" >"$WORK/app.out" 2>"$WORK/app.err" &
+    APP_PID=$!
+    APP_WINDOW=$(timeout 30 xdotool search --sync --onlyvisible --name '^particle-lab' | head -n 1) ||
+        fail "no particle-lab window appeared; stderr: $(cat "$WORK/app.err")"
+    xdotool windowfocus --sync "$APP_WINDOW"
+}
+
+# Real key events (XTEST) to the focused app window.
+press() {
+    xdotool windowfocus --sync "$APP_WINDOW"
+    xdotool key "$@"
+}
+
+# Asks the running app for a state dump (SIGUSR1) and waits until it is written.
+dump_now() {
+    local file=$1
+    rm -f "$file"
+    kill -USR1 "$APP_PID"
+    for _ in $(seq 100); do
+        [ -s "$file" ] && return 0
+        sleep 0.05
+    done
+    fail "no state dump appeared at $file"
+}
+
+# Dumps until the condition holds (the app needs a frame or two to act on a key).
+wait_for_state() {
+    local file=$1 condition=$2 message=$3
+    for _ in $(seq 60); do
+        dump_now "$file"
+        "$PYTHON" -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' \
+            "$file" "$condition" && return 0
+        sleep 0.05
+    done
+    fail "$message (condition: $condition; state: $(head -c 400 "$file"))"
+}
+
+# Waits for the app to exit; sets APP_EXIT_CODE.
+wait_exit() {
+    for _ in $(seq 200); do
+        kill -0 "$APP_PID" 2>/dev/null || break
+        sleep 0.05
+    done
+    kill -0 "$APP_PID" 2>/dev/null && fail "the app did not exit"
+    APP_EXIT_CODE=0
+    wait "$APP_PID" || APP_EXIT_CODE=$?
+    APP_PID=""
+}
