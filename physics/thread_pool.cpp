@@ -31,6 +31,7 @@ void wait_for_change(const std::atomic<std::uint64_t>& a, std::uint64_t old) {
 
 // Cached: hardware_concurrency() reads /sys on every call, far too slow for once per step.
 int hardware_threads() {
+    // Asked once: glibc answers hardware_concurrency() by reading sysfs, microseconds per call.
     static const int n = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     return n;
 }
@@ -70,6 +71,9 @@ void ThreadPool::worker_loop(Slot& slot) {
         wait_for_change(slot.go, seen);
         seen = slot.go.load(std::memory_order_acquire);
         if (slot.stop) return;
+        std::uint64_t posted = Slot::tag(seen, Slot::posted);
+        if (!slot.state.compare_exchange_strong(posted, Slot::tag(seen, Slot::claimed), std::memory_order_acq_rel))
+            continue;  // withdrawn: the caller has done the work already
         work(*slot.job);
         slot.done.store(seen, std::memory_order_release);
         slot.done.notify_one();
@@ -91,14 +95,21 @@ void ThreadPool::run_erased(std::size_t tasks, std::size_t threads, TaskFn fn, v
     job.tasks = tasks;
     for (std::size_t w = 0; w < helpers; ++w) {
         Slot& slot = *slots_[w];
+        const std::uint64_t handed = slot.go.load(std::memory_order_relaxed) + 1;
         slot.job = &job;
-        slot.go.fetch_add(1, std::memory_order_release);
+        slot.state.store(Slot::tag(handed, Slot::posted), std::memory_order_release);
+        slot.go.store(handed, std::memory_order_release);
         slot.go.notify_one();
     }
     work(job);
     for (std::size_t w = 0; w < helpers; ++w) {
         Slot& slot = *slots_[w];
         const std::uint64_t handed = slot.go.load(std::memory_order_relaxed);
+        // A worker that has not woken up yet (the OS gave its core to someone else) is not
+        // waited for: all tasks are done, so the job is withdrawn from it.
+        std::uint64_t posted = Slot::tag(handed, Slot::posted);
+        if (slot.state.compare_exchange_strong(posted, Slot::tag(handed, Slot::withdrawn), std::memory_order_acq_rel))
+            continue;
         for (std::uint64_t d = slot.done.load(std::memory_order_acquire); d != handed;
              d = slot.done.load(std::memory_order_acquire))
             wait_for_change(slot.done, d);

@@ -43,13 +43,17 @@ private:
         std::size_t tasks = 0;
         std::atomic<std::size_t> next{0};
     };
-    // One per worker: the caller hands a job over by bumping `go`, the worker answers by
-    // setting `done` to the same number. A worker only ever looks at its own slot, and the
-    // caller does not reuse a slot before it is answered, so no job is seen twice or late.
+    // One per worker: the caller hands job number g over by posting it in `state` and setting
+    // `go` to g; the worker claims it in `state`, runs tasks and sets `done` to g. After its own
+    // tasks the caller withdraws a job nobody claimed, and waits only for claimed ones. A worker
+    // only looks at its own slot, and claim and withdrawal are one compare-and-swap each on a
+    // value that carries g, so no job is run late, twice, or after the caller has returned.
     struct Slot {
-        std::atomic<std::uint64_t> go{0}, done{0};
+        enum Phase : std::uint64_t { posted = 1, claimed = 2, withdrawn = 3 };
+        static std::uint64_t tag(std::uint64_t job, Phase phase) { return job << 2 | phase; }
+        std::atomic<std::uint64_t> go{0}, done{0}, state{0};
         Job* job = nullptr;
-        bool stop = false;
+        std::atomic<bool> stop{false};
     };
 
     void run_erased(std::size_t tasks, std::size_t threads, TaskFn fn, void* ctx);

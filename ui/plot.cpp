@@ -651,9 +651,10 @@ PlotResult EndPlot() {
         ImGui::OpenPopup("##plot_menu");
 
     // ---- hover readout of the nearest sample
-    if (!fit_all) link.hover_x = hovered ? f.data_x(mouse.x) : (link.hover_owner == c.id ? nan : link.hover_x);
-    if (hovered) link.hover_owner = c.id;
-    if (hovered && !over_entry && !ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    const bool readout = hovered && !has_flag(PlotFlags_NoHover);
+    if (!fit_all) link.hover_x = readout ? f.data_x(mouse.x) : (link.hover_owner == c.id || has_flag(PlotFlags_NoHover) ? nan : link.hover_x);
+    if (readout) link.hover_owner = c.id;
+    if (readout && !over_entry && !ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
         const Nearest n = find_nearest(c.items, f, mouse, !fit_all);
         if (n.item && n.distance < 60.0f) {
             dl->AddCircle(n.at, 5.0f, text_col, 12, 1.5f);

@@ -34,6 +34,7 @@ enum PlotFlags : int {
     PlotFlags_FitAll = 1 << 3,    // static data: both axes fit everything, no follow mode
     PlotFlags_ExportCsv = 1 << 4, // this frame, EndPlot returns the visible data as CSV
     PlotFlags_LegendOutside = 1 << 5,  // legend to the right of the plot area (short, wide plots)
+    PlotFlags_NoHover = 1 << 6,   // no readout or cursor this frame (while a picture is taken)
 };
 
 // The x range that stacked plots share (the time axis). Owned by the caller.

@@ -121,12 +121,20 @@ inline void decimate_m4(const double* xs, const double* ys, std::size_t n, doubl
         std::size_t stop = static_cast<std::size_t>(std::lower_bound(xs + i, xs + end, column_end) - xs);
         if (stop <= i) stop = i + 1;
         std::size_t lowest = i, highest = i, last = i;
+        double low = ys[i], high = ys[i];
+        constexpr double largest = std::numeric_limits<double>::max();
         for (std::size_t k = i + 1; k < stop; ++k) {
             const double y = ys[k];
-            if (!(y == y) || std::isinf(y)) break;  // a gap: the column ends at it
+            if (!(std::abs(y) <= largest)) break;  // NaN or infinite: a gap, the column ends at it
             last = k;
-            if (y < ys[lowest]) lowest = k;
-            if (y > ys[highest]) highest = k;
+            if (y < low) {
+                low = y;
+                lowest = k;
+            }
+            if (y > high) {
+                high = y;
+                highest = k;
+            }
         }
         const std::size_t picks[4] = {i, std::min(lowest, highest), std::max(lowest, highest), last};
         std::size_t previous = n;  // no index yet

@@ -134,17 +134,21 @@ void handle_result(LabSession& s, const plot::PlotResult& r, const std::string& 
     if (r.export_png) ask_picture(s, export_path(p, name, ".png"), r.frame_min, r.frame_max);
 }
 
-void toolbar(LabSession& s, PanelState& p, bool& export_csv, bool& export_png) {
+void toolbar(PanelState& p, bool& export_csv, bool& export_png) {
     plot::TimeAxisLink& axis = p.time_axis;
+    // No tooltips while a picture is pending: the mouse is still on the button that asked.
+    const bool quiet = p.picture.frames_left >= 0;
+    auto tip = [quiet](const std::string& text) {
+        if (!quiet && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+    };
     ImGui::Checkbox("follow", &axis.follow_latest);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Follow the newest samples. Drag a plot to scroll back in time, "
-                                                  "wheel to zoom, double-click to follow again.");
+    tip("Follow the newest samples. Drag a plot to scroll back in time, wheel to zoom, double-click to follow again.");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
     double window = axis.window_s;
     if (ImGui::InputDouble("window (s)", &window, 0.0, 0.0, window > 0.0 ? "%.3g" : "all", ImGuiInputTextFlags_EnterReturnsTrue))
         axis.window_s = std::clamp(window, 0.0, 1e7);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Seconds of history shown while following (0: all of it)");
+    tip("Seconds of history shown while following (0: all of it)");
     ImGui::SameLine();
     if (ImGui::SmallButton("all")) {
         axis.window_s = 0.0;
@@ -152,16 +156,13 @@ void toolbar(LabSession& s, PanelState& p, bool& export_csv, bool& export_png) {
     }
     ImGui::SameLine();
     ImGui::Checkbox("bounces", &p.show_event_markers);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Mark bounces and rests with ticks on the time axis");
+    tip("Mark bounces and rests with ticks on the time axis");
     ImGui::SameLine();
     export_csv = ImGui::SmallButton("CSV");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Export the visible data of these plots to %s", export_path(p, "<plot>", ".csv").string().c_str());
+    tip("Export the visible data of these plots to " + export_path(p, "<plot>", ".csv").string());
     ImGui::SameLine();
     export_png = ImGui::SmallButton("PNG");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Save a picture of the plots to %s", export_path(p, "plots", ".png").string().c_str());
-    (void)s;
+    tip("Save a picture of the plots to " + export_path(p, "plots", ".png").string());
 }
 
 void motion_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool export_csv) {
@@ -179,6 +180,7 @@ void motion_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
         if (q < 2) flags |= plot::PlotFlags_NoXLabel;
         if (q > 0) flags |= plot::PlotFlags_NoLegend;
         if (export_csv) flags |= plot::PlotFlags_ExportCsv;
+        if (p.picture.frames_left >= 0) flags |= plot::PlotFlags_NoHover;
         if (!plot::BeginPlot(ids[q], ImVec2(-1, each), flags)) continue;
         plot::SetupAxes("time (s)", y_labels[q]);
         plot::SetupXLink(&p.time_axis);
@@ -208,7 +210,8 @@ void ledger_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
     const Model& m = s.experiment->run(v).model();
     const float avail = ImGui::GetContentRegionAvail().y;
     const float top = std::max(100.0f, avail * 0.62f);
-    int flags = plot::PlotFlags_NoXLabel | (export_csv ? plot::PlotFlags_ExportCsv : 0);
+    const int quiet = p.picture.frames_left >= 0 ? plot::PlotFlags_NoHover : 0;
+    int flags = plot::PlotFlags_NoXLabel | quiet | (export_csv ? plot::PlotFlags_ExportCsv : 0);
     if (plot::BeginPlot("##ledger", ImVec2(-1, top), flags)) {
         plot::SetupAxes("time (s)", "energy (J), all particles");
         plot::SetupXLink(&p.time_axis);
@@ -221,7 +224,7 @@ void ledger_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
             plot::PlotLine("work by wind", l.wind_work, series_color(9));
         handle_result(s, plot::EndPlot(), "ledger");
     }
-    flags = export_csv ? plot::PlotFlags_ExportCsv : plot::PlotFlags_None;
+    flags = quiet | (export_csv ? plot::PlotFlags_ExportCsv : plot::PlotFlags_None);
     if (plot::BeginPlot("##residual", ImVec2(-1, -1), flags)) {
         plot::SetupAxes("time (s)", "residual E0 + W_wind - (KE + PE + lost) (J)");
         plot::SetupXLink(&p.time_axis);
@@ -238,7 +241,7 @@ void draw_plots_panel(LabSession& s) {
     const PlotHistory& h = history_of(s);
     pending_picture(s);
     bool export_csv = false, export_png = false;
-    toolbar(s, p, export_csv, export_png);
+    toolbar(p, export_csv, export_png);
     const ImVec2 region_min = ImGui::GetCursorScreenPos();
     if (ImGui::BeginTabBar("##plot_tabs")) {
         if (ImGui::BeginTabItem("Height, speed, energy")) {

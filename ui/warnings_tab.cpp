@@ -3,6 +3,9 @@
 
 #include <imgui.h>
 
+#include <utility>
+#include <vector>
+
 namespace pl::ui {
 namespace {
 
@@ -35,8 +38,16 @@ void draw_warnings_tab(LabSession& s) {
     ImGui::TableSetupColumn("kind", ImGuiTableColumnFlags_WidthFixed);
     ImGui::TableSetupColumn("message", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableHeadersRow();
-    for (std::size_t v = 0; v < e.variant_count(); ++v) {
-        for (const Warning& w : e.run(v).warnings()) {
+    // Thousands of particles may each warn once: draw only the visible rows.
+    std::vector<std::pair<std::size_t, const Warning*>> rows;
+    for (std::size_t v = 0; v < e.variant_count(); ++v)
+        for (const Warning& w : e.run(v).warnings()) rows.emplace_back(v, &w);
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(rows.size()));
+    while (clipper.Step()) {
+        for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
+            const std::size_t v = rows[static_cast<std::size_t>(r)].first;
+            const Warning& w = *rows[static_cast<std::size_t>(r)].second;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::Text("%.4f", w.t);
@@ -47,7 +58,8 @@ void draw_warnings_tab(LabSession& s) {
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(kind_name(w.kind));
             ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", w.message.c_str());
+            ImGui::TextUnformatted(w.message.c_str());
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", w.message.c_str());
         }
     }
     ImGui::EndTable();

@@ -45,7 +45,7 @@ OrbitCamera framing_camera(const Room& room) {
     c.target = glm::vec3(room.center) - glm::vec3(0.0f, 0.1f * static_cast<float>(room.size.y), 0.0f);
     c.yaw = 0.55f;
     c.pitch = 0.42f;
-    c.distance = 1.25f * room_radius(room) / std::sin(0.5f * c.fov_y);
+    c.distance = 1.08f * room_radius(room) / std::sin(0.5f * c.fov_y);
     return c;
 }
 

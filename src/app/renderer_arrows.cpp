@@ -5,8 +5,27 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace pl::app {
+
+namespace {
+
+// The 1-2-5 value nearest to `raw` from below.
+float nice_time(double raw) {
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    double best = magnitude;
+    for (double m : {1.0, 2.0, 5.0})
+        if (m * magnitude <= raw) best = m * magnitude;
+    return static_cast<float>(best);
+}
+
+double room_extent(const Room& room) { return std::max({room.size.x, room.size.y, room.size.z}); }
+
+}  // namespace
+
+float velocity_arrow_time_s(const Room& room) { return nice_time(room_extent(room) / 40.0); }
+float wind_arrow_time_s(const Room& room) { return nice_time(room_extent(room) / 25.0); }
 
 void append_arrow(LineSegments& out, glm::vec3 from, glm::vec3 to, glm::vec4 color, glm::vec3 view_dir) {
     const glm::vec3 shaft = to - from;
@@ -28,6 +47,7 @@ void append_velocity_arrows(const Experiment& e, std::optional<std::size_t> only
     for (std::size_t v = 0; v < variants; ++v) {
         if (only_variant && v != *only_variant) continue;
         const ParticleState& s = e.run(v).state();
+        const float time_s = velocity_arrow_time_s(e.run(v).model().room);
         const std::size_t n = std::min(s.size(), max_velocity_arrows_per_variant);
         for (std::size_t i = 0; i < n; ++i) {
             const ui::Rgb c = ui::series_color(variants, v, i);
@@ -37,7 +57,7 @@ void append_velocity_arrows(const Experiment& e, std::optional<std::size_t> only
             const float speed = glm::length(vel);
             if (!(speed > 1e-6f)) continue;
             const glm::vec3 start = x + vel / speed * static_cast<float>(s.radius[i]);
-            append_arrow(out, start, start + vel * velocity_arrow_time_s,
+            append_arrow(out, start, start + vel * time_s,
                          glm::vec4(0.5f + 0.5f * c.r, 0.5f + 0.5f * c.g, 0.5f + 0.5f * c.b, 0.95f), view_dir);
         }
     }
@@ -56,7 +76,7 @@ void append_wind_arrows(const Experiment& e, std::size_t variant, glm::vec3 view
                 const Vec3 p = lo + Vec3((i + 0.5) / nx * size.x, (j + 0.5) / ny * size.y, (k + 0.5) / nz * size.z);
                 const glm::vec3 w(sim.wind().at(p, e.time()));
                 const glm::vec3 from(p);
-                append_arrow(out, from, from + w * wind_arrow_time_s, color, view_dir);
+                append_arrow(out, from, from + w * wind_arrow_time_s(room), color, view_dir);
             }
 }
 

@@ -11,9 +11,10 @@ namespace pl::app {
 // An arrow from `from` to `to` with a two-stroke head in the plane facing `view_dir`.
 void append_arrow(LineSegments& out, glm::vec3 from, glm::vec3 to, glm::vec4 color, glm::vec3 view_dir);
 
-// Arrow length = distance covered in this time at the arrow's speed.
-constexpr float velocity_arrow_time_s = 0.1f;
-constexpr float wind_arrow_time_s = 0.25f;
+// Arrow length = distance covered in this time at the arrow's speed. Scaled to the room (a
+// 1-2-5 step) so a few m/s read as a visible fraction of it in any room.
+float velocity_arrow_time_s(const Room& room);
+float wind_arrow_time_s(const Room& room);
 constexpr std::size_t max_velocity_arrows_per_variant = 256;
 
 void append_velocity_arrows(const Experiment& e, std::optional<std::size_t> only_variant, glm::vec3 view_dir,

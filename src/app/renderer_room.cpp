@@ -10,7 +10,7 @@ namespace pl::app {
 namespace {
 
 const glm::vec4 floor_color(0.19f, 0.21f, 0.25f, 0.80f);
-const glm::vec4 wall_color(0.16f, 0.18f, 0.22f, 0.40f);
+const glm::vec4 wall_color(0.20f, 0.225f, 0.27f, 0.55f);
 const glm::vec4 grid_major_color(0.62f, 0.68f, 0.78f, 0.30f);
 const glm::vec4 grid_minor_color(0.62f, 0.68f, 0.78f, 0.10f);
 const glm::vec4 edge_color(0.60f, 0.66f, 0.76f, 0.75f);
@@ -48,7 +48,7 @@ GridSpacing floor_grid_spacing(const Room& room) {
     GridSpacing g;
     g.major = (extent >= 2.0 && extent <= 50.0) ? 1.0 : nice_step(extent / 10.0);
     const double minor = g.major / (extent / g.major <= 6.0 ? 10.0 : 2.0);
-    g.minor = extent / minor <= 60.0 ? minor : 0.0;
+    g.minor = extent / minor <= 30.0 ? minor : 0.0;
     return g;
 }
 

@@ -70,13 +70,16 @@ void label_ticks(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane, co
         if (std::llround(value / row.step) % every != 0) continue;
         centered_text(dl, to_imvec(at), label_color, format_metres(value).c_str());
     }
+    const ImU32 name_color = to_u32(axis_colors[static_cast<std::size_t>(row.axis)], 0.95f);
+    if (row.axis == 1) {
+        // A vertical scale: its name goes one line above the top label.
+        const ScreenPoint& top = ticks.back().second;
+        centered_text(dl, ImVec2(top.x, top.y - ImGui::GetTextLineHeightWithSpacing()), name_color, row.name);
+        return;
+    }
     glm::vec3 mid = row.base + 2.6f * row.outward;
     mid[row.axis] = static_cast<float>(0.5 * (row.lo + row.hi));
-    if (row.axis == 1) mid[1] = static_cast<float>(row.hi) + 0.6f * glm::length(row.outward);  // above the column
-    if (auto s = project(cam, pane, mid)) {
-        const ui::Rgb c = axis_colors[static_cast<std::size_t>(row.axis)];
-        centered_text(dl, to_imvec(*s), to_u32(c, 0.95f), row.name);
-    }
+    if (auto s = project(cam, pane, mid)) centered_text(dl, to_imvec(*s), name_color, row.name);
 }
 
 void draw_metre_marks(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane, const Room& room) {
@@ -87,13 +90,16 @@ void draw_metre_marks(ImDrawList* dl, const CameraMatrices& cam, const Rect& pan
     const float near_z = eye.z >= centre.z ? hi.z : lo.z;
     const float near_x = eye.x >= centre.x ? hi.x : lo.x;
     const float far_z = eye.z >= centre.z ? lo.z : hi.z;
+    const float far_x = eye.x >= centre.x ? lo.x : hi.x;
     const float margin = 0.045f * std::max({hi.x - lo.x, hi.z - lo.z});
     const float out_z = eye.z >= centre.z ? margin : -margin;
     const float out_x = eye.x >= centre.x ? margin : -margin;
     label_ticks(dl, cam, pane, {0, {0.0f, lo.y, near_z}, {0.0f, 0.0f, out_z}, lo.x, hi.x, step, 0.0, "x (m)"});
     label_ticks(dl, cam, pane, {2, {near_x, lo.y, 0.0f}, {out_x, 0.0f, 0.0f}, lo.z, hi.z, step, 0.0, "z (m)"});
-    // Height above the floor on the far vertical edge of the labelled side.
-    label_ticks(dl, cam, pane, {1, {near_x, 0.0f, far_z}, {out_x, 0.0f, 0.0f}, lo.y, hi.y, step, lo.y, "height (m)"});
+    // Height above the floor on the farthest vertical edge, clear of both floor rows; its 0 would
+    // sit on the floor corner, so it starts one step up.
+    const glm::vec3 corner_out = glm::normalize(glm::vec3(far_x - centre.x, 0.0f, far_z - centre.z)) * margin;
+    label_ticks(dl, cam, pane, {1, {far_x, 0.0f, far_z}, corner_out, lo.y + step, hi.y, step, lo.y, "height (m)"});
 }
 
 void draw_axis_gizmo(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane) {

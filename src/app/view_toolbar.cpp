@@ -50,10 +50,11 @@ ViewCommand draw_view_toolbar(ui::LabSession& s) {
     char tip[256];
     toggle_button("Trails", s.show_trails, "Fading trails of the first particles of each variant and the selected one");
     ImGui::SameLine();
-    std::snprintf(tip, sizeof tip, "Velocity arrows: each shows the distance covered in %.2g s", velocity_arrow_time_s);
+    const Room room = s.experiment ? s.experiment->scene().room : Room{};
+    std::snprintf(tip, sizeof tip, "Velocity arrows: each shows the distance covered in %.2g s", velocity_arrow_time_s(room));
     toggle_button("Velocity", s.show_velocity, tip);
     ImGui::SameLine();
-    std::snprintf(tip, sizeof tip, "Wind field on a grid: each arrow shows the air's travel in %.2g s%s", wind_arrow_time_s,
+    std::snprintf(tip, sizeof tip, "Wind field on a grid: each arrow shows the air's travel in %.2g s%s", wind_arrow_time_s(room),
                   s.experiment ? wind_note(*s.experiment) : "");
     toggle_button("Wind", s.show_wind, tip);
     ImGui::SameLine();
