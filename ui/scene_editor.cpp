@@ -133,11 +133,8 @@ void edit_wind_section(SceneEditor& ed, const std::function<WindSettings&(Scene&
             ed.vec3("mean (m/s)", w.velocity, [&](Scene& s, const Vec3& v) { at(s).velocity = v; });
             ed.vec3("amplitude (m/s)", w.gust_amplitude, [&](Scene& s, const Vec3& v) { at(s).gust_amplitude = v; });
             ed.number("period (s)", w.gust_period_s, [&](Scene& s, double v) { at(s).gust_period_s = v; });
-            {
-                int seed = static_cast<int>(w.gust_seed % 1000000);
-                if (ImGui::InputInt("seed", &seed, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) && seed >= 0)
-                    ed.apply([&](Scene& s) { at(s).gust_seed = static_cast<std::uint64_t>(seed); });
-            }
+            ed.integer("seed", w.gust_seed, std::uint64_t{1} << 53, "world.wind.seed",
+                       [&](Scene& s, std::uint64_t v) { at(s).gust_seed = v; }, "Same seed, same gusts.");
             break;
         case WindKind::shear:
             ed.vec3("at ref. height (m/s)", w.velocity, [&](Scene& s, const Vec3& v) { at(s).velocity = v; });

@@ -6,6 +6,10 @@
 #include "ui/lab_session.hpp"
 
 #include <cstdio>
+
+#ifndef PL_PRESET_DIR
+#define PL_PRESET_DIR "presets"
+#endif
 #include <exception>
 
 namespace pl::app {
@@ -23,6 +27,7 @@ int run_gui(int argc, char** argv) {
         return 2;
     }
     ui::LabSession session;
+    session.preset_dir = PL_PRESET_DIR;
     session.apply_scene(*preset.scene);
     session.preset_path = options.preset;
     if (options.time_scale) session.time_scale = *options.time_scale;

@@ -85,12 +85,21 @@ void dump_state(const GuiOptions& o, const ui::LabSession& s, long frames, const
     if (!error.empty()) std::fprintf(stderr, "particle-lab: --dump-state: %s\n", error.c_str());
 }
 
-void take_screenshot(const std::filesystem::path& file, GLFWwindow* window, ui::LabSession& s) {
+// The whole window, or the crop (in ImGui coordinates) a panel asked for.
+void take_screenshot(const std::filesystem::path& file, GLFWwindow* window, ui::LabSession& s, const ui::Requests* crop) {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window, &w, &h);
-    const std::string error = write_screenshot_png(file, w, h);
+    PixelRect area{0, 0, w, h};
+    if (crop && crop->crop_w > 0.0f && crop->crop_h > 0.0f) {
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        const float sx = display.x > 0 ? static_cast<float>(w) / display.x : 1.0f;
+        const float sy = display.y > 0 ? static_cast<float>(h) / display.y : 1.0f;
+        area = {static_cast<int>(std::lround(crop->crop_x * sx)), static_cast<int>(std::lround(crop->crop_y * sy)),
+                static_cast<int>(std::lround(crop->crop_w * sx)), static_cast<int>(std::lround(crop->crop_h * sy))};
+    }
+    const std::string error = write_screenshot_png(file, w, h, area);
     if (error.empty()) {
-        s.status_message = "Saved screenshot " + file.string();
+        s.status_message = "Saved " + file.string();
     } else {
         std::fprintf(stderr, "particle-lab: %s\n", error.c_str());
         s.error_popup = error;
@@ -128,12 +137,14 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
 
     while (true) {
         glfwPollEvents();
-        if (quit_signalled() || session.requests.quit) break;
+        // Quitting still draws this one frame when a screenshot of the last frame is wanted.
+        const bool quitting = quit_signalled() || session.requests.quit;
+        if (quitting && !options.screenshot) break;
         if (take_dump_request()) dump_state(options, session, frames, {view.camera, shown_panes});
         if (glfwWindowShouldClose(window.handle())) {
             glfwSetWindowShouldClose(window.handle(), GLFW_FALSE);
             if (session.dirty) session.confirm_quit = true;
-            else break;
+            else session.requests.quit = true;
         }
         const Clock::time_point now = Clock::now();
         const double measured_dt = std::chrono::duration<double>(now - last).count();
@@ -188,12 +199,13 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         imgui.render();
 
         ++frames;
-        const bool last_frame = options.frames && frames >= *options.frames;
+        const bool last_frame = quitting || (options.frames && frames >= *options.frames);
         if (session.requests.screenshot) {
-            take_screenshot(session.requests.screenshot_path, window.handle(), session);
+            take_screenshot(session.requests.screenshot_path, window.handle(), session, &session.requests);
             session.requests.screenshot = false;
+            session.requests.crop_w = session.requests.crop_h = 0.0f;
         }
-        if (last_frame && options.screenshot) take_screenshot(*options.screenshot, window.handle(), session);
+        if (last_frame && options.screenshot) take_screenshot(*options.screenshot, window.handle(), session, nullptr);
         glfwSwapBuffers(window.handle());
         if (last_frame) break;
 

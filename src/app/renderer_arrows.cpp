@@ -63,6 +63,16 @@ void append_velocity_arrows(const Experiment& e, std::optional<std::size_t> only
     }
 }
 
+std::optional<std::size_t> wind_variant_to_show(const Experiment& e, std::optional<std::size_t> pane_variant,
+                                                std::size_t selected_variant) {
+    auto has_wind = [&](std::size_t v) { return v < e.variant_count() && e.run(v).wind().kind() != WindKind::none; };
+    if (pane_variant) return has_wind(*pane_variant) ? pane_variant : std::nullopt;
+    if (has_wind(selected_variant)) return selected_variant;
+    for (std::size_t v = 0; v < e.variant_count(); ++v)
+        if (has_wind(v)) return v;
+    return std::nullopt;
+}
+
 void append_wind_arrows(const Experiment& e, std::size_t variant, glm::vec3 view_dir, LineSegments& out) {
     const Simulation& sim = e.run(variant);
     if (sim.wind().kind() == WindKind::none) return;

@@ -19,6 +19,11 @@ constexpr std::size_t max_velocity_arrows_per_variant = 256;
 
 void append_velocity_arrows(const Experiment& e, std::optional<std::size_t> only_variant, glm::vec3 view_dir,
                             LineSegments& out);
+// Whose wind a pane shows: its own variant's in a split pane; overlaid, the selected variant's,
+// or the first variant that has wind when the selected one has none. Empty: no wind to show.
+std::optional<std::size_t> wind_variant_to_show(const Experiment& e, std::optional<std::size_t> pane_variant,
+                                                std::size_t selected_variant);
+
 // The wind of `variant` at the current time on a 6 x 4 x 6 grid filling the room.
 void append_wind_arrows(const Experiment& e, std::size_t variant, glm::vec3 view_dir, LineSegments& out);
 

@@ -91,9 +91,9 @@ void SceneRenderer::draw_pane(const ui::LabSession& session, const TrailHistory&
     }
     if (session.show_wind) {
         segments_.clear();
-        const std::size_t variant = pane.variant.value_or(
-            static_cast<std::size_t>(std::clamp(session.selected_variant, 0, static_cast<int>(e.variant_count()) - 1)));
-        append_wind_arrows(e, variant, view_dir, segments_);
+        const auto selected = static_cast<std::size_t>(std::max(session.selected_variant, 0));
+        if (const auto variant = wind_variant_to_show(e, pane.variant, selected))
+            append_wind_arrows(e, *variant, view_dir, segments_);
         lines_.draw(segments_, cam.view_proj, viewport, 1.4f);
     }
     segments_.clear();

@@ -3,16 +3,21 @@
 #include <glad/gl.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace pl::app {
 
-std::string write_screenshot_png(const std::filesystem::path& file, int width, int height) {
-    if (width <= 0 || height <= 0) return "the window has no pixels to capture";
+std::string write_screenshot_png(const std::filesystem::path& file, int fb_width, int fb_height, PixelRect area) {
+    const int x0 = std::clamp(area.x, 0, fb_width), y0 = std::clamp(area.y, 0, fb_height);
+    const int x1 = std::clamp(area.x + area.w, 0, fb_width), y1 = std::clamp(area.y + area.h, 0, fb_height);
+    const int width = x1 - x0, height = y1 - y0;
+    if (width <= 0 || height <= 0) return "nothing to capture for " + file.string() + ": the area is empty";
     std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
     glReadBuffer(GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+    // GL's origin is bottom left.
+    glReadPixels(x0, fb_height - y1, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
     // GL rows run bottom-up; PNG rows top-down.
     stbi_flip_vertically_on_write(1);
     const int ok = stbi_write_png(file.c_str(), width, height, 3, pixels.data(), width * 3);

@@ -6,7 +6,14 @@
 
 namespace pl::app {
 
-// Reads the back buffer (call after drawing, before swapping). Returns "" or why it failed.
-std::string write_screenshot_png(const std::filesystem::path& file, int framebuffer_width, int framebuffer_height);
+// A rectangle of the framebuffer in pixels, origin top left.
+struct PixelRect {
+    int x = 0, y = 0, w = 0, h = 0;
+};
+
+// Reads `area` of the back buffer (call after drawing, before swapping) into a PNG; the area is
+// clipped to the framebuffer. Returns "" or why it failed.
+std::string write_screenshot_png(const std::filesystem::path& file, int framebuffer_width, int framebuffer_height,
+                                 PixelRect area);
 
 }  // namespace pl::app

@@ -52,8 +52,9 @@ void run_to_next_event(ui::LabSession& s, const std::function<void()>& after_ste
 void relaunch(ui::LabSession& s) {
     Experiment& e = *s.experiment;
     if (e.runs().empty() || e.run(0).particle_count() == 0) return;
-    const Vec3 start = s.scene.particles.empty() ? initial_particles(s.scene).front().position
-                                                 : s.scene.particles.front().position;
+    const Scene& running = e.scene();  // the panels' edits are not applied yet
+    const Vec3 start = running.particles.empty() ? initial_particles(running).front().position
+                                                 : running.particles.front().position;
     for (std::size_t v = 0; v < e.variant_count(); ++v) relaunch_particle(e.run(v), 0, start, s.launch_velocity);
     s.status_message = fmt::format("Launched particle 0 at ({:.3g}, {:.3g}, {:.3g}) m/s", s.launch_velocity.x,
                                    s.launch_velocity.y, s.launch_velocity.z);

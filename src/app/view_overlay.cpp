@@ -1,5 +1,6 @@
 #include "app/view_overlay.hpp"
 
+#include "app/renderer_arrows.hpp"
 #include "app/renderer_room.hpp"
 #include "physics/energy.hpp"
 #include "ui/palette.hpp"
@@ -156,6 +157,22 @@ void draw_legend(ImDrawList* dl, const Rect& pane, const Experiment& e, std::opt
     }
 }
 
+// Names whose wind the arrows show (overlaid variants can differ), or says there is none.
+void draw_wind_caption(ImDrawList* dl, const Rect& pane, const Experiment& e, std::optional<std::size_t> pane_variant,
+                       std::size_t selected_variant) {
+    const std::optional<std::size_t> v = wind_variant_to_show(e, pane_variant, selected_variant);
+    std::string text;
+    if (!v) text = "no wind here";
+    else {
+        const std::string kind = to_string(e.run(*v).wind().kind());
+        const std::string& label = e.run(*v).model().label;
+        text = "wind: " + (pane_variant || label.empty() || label == kind ? kind : label + " (" + kind + ")");
+    }
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    shadowed_text(dl, ImVec2(pane.right() - size.x - 12.0f, pane.bottom() - size.y - 10.0f), IM_COL32(140, 215, 240, 230),
+                  text.c_str());
+}
+
 void draw_time_badge(ImDrawList* dl, const Rect& pane, const ui::LabSession& s) {
     char text[64];
     std::snprintf(text, sizeof text, "t = %.3f s", s.experiment->time());
@@ -241,6 +258,7 @@ void draw_view_overlay(const ui::LabSession& session, const std::vector<ViewPane
         draw_axis_gizmo(dl, cam, r);
         if (e.variant_count() > 1) draw_legend(dl, r, e, pane.variant);
         if (k == top_right) draw_time_badge(dl, r, session);
+        if (session.show_wind) draw_wind_caption(dl, r, e, pane.variant, selected_variant);
         // Selection: in a split pane the selected particle of that pane's variant.
         const std::size_t ring_variant = pane.variant.value_or(selected_variant);
         if (ring_variant < e.variant_count())

@@ -66,17 +66,32 @@ ViewCommand draw_view_toolbar(ui::LabSession& s) {
         ImGui::SetTooltip("Split view needs a preset with several variants");
 
     ImGui::SameLine(0.0f, 18.0f);
-    ImGui::TextDisabled("View");
-    ImGui::SameLine();
+    // The camera buttons in a row when they fit, otherwise behind one "View" button.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float row_width = ImGui::CalcTextSize("View").x + style.ItemSpacing.x;
+    for (const char* label : {"X", "Y", "Z", "Reset", "Focus"})
+        row_width += ImGui::CalcTextSize(label).x + 2.0f * style.FramePadding.x + style.ItemSpacing.x;
+    const bool in_row = ImGui::GetContentRegionAvail().x >= row_width;
+    if (in_row) {
+        ImGui::TextDisabled("View");
+        ImGui::SameLine();
+    } else {
+        if (ImGui::Button("View")) ImGui::OpenPopup("view_menu");
+        if (!ImGui::BeginPopup("view_menu")) return cmd;
+    }
+    auto next = [&] {
+        if (in_row) ImGui::SameLine();
+    };
     if (view_button("X", "Look along the x axis (key 1; Shift+1 from the other side)")) cmd.axis = 0;
-    ImGui::SameLine();
+    next();
     if (view_button("Y", "Look down the y axis: top view (key 2; Shift+2 from below)")) cmd.axis = 1;
-    ImGui::SameLine();
+    next();
     if (view_button("Z", "Look along the z axis: front view (key 3; Shift+3 from behind)")) cmd.axis = 2;
-    ImGui::SameLine();
+    next();
     if (view_button("Reset", "Frame the whole room (key 0)")) cmd.reset = true;
-    ImGui::SameLine();
+    next();
     if (view_button("Focus", "Centre the view on the selected particle (key F)")) cmd.focus_selected = true;
+    if (!in_row) ImGui::EndPopup();
     return cmd;
 }
 

@@ -4,6 +4,7 @@
 // glad first: it provides the GL declarations GLFW would otherwise pull in.
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -33,6 +34,13 @@ GLFWwindow* try_create(int width, int height, const std::string& title, int samp
 AppWindow::AppWindow(int width, int height, const std::string& title) {
     glfwSetErrorCallback(report_glfw_error);
     if (!glfwInit()) throw std::runtime_error("cannot initialise GLFW (is a display available?)");
+    // Never larger than the screen: the layout is made to fit down to 1280 x 720.
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        if (const GLFWvidmode* mode = glfwGetVideoMode(monitor)) {
+            width = std::min(width, mode->width);
+            height = std::min(height, mode->height);
+        }
+    }
     window_ = try_create(width, height, title, 4);
     if (!window_) {
         // Some X servers offer no multisampled visual: fall back to a plain one quietly.
