@@ -43,8 +43,10 @@ float pixel_size_at_unit_depth(const OrbitCamera& c, float height_px) {
 OrbitCamera framing_camera(const Room& room) {
     OrbitCamera c;
     c.target = glm::vec3(room.center) - glm::vec3(0.0f, 0.1f * static_cast<float>(room.size.y), 0.0f);
-    c.yaw = 0.55f;
-    c.pitch = 0.42f;
+    // Mostly from the front (+z), so motion along x, the usual throwing direction, crosses the
+    // screen instead of coming at the viewer.
+    c.yaw = 0.32f;
+    c.pitch = 0.40f;
     c.distance = 1.08f * room_radius(room) / std::sin(0.5f * c.fov_y);
     return c;
 }

@@ -42,14 +42,15 @@ std::string format_metres(double v) {
 }
 
 // Labels the grid lines along one edge of the room, thinned out when they would crowd on
-// screen, with the axis name beside the middle of the row. `axis` is the world axis the labels
-// run along, `origin` is subtracted from the printed values (heights count from the floor).
+// screen, with the axis name beyond one end of the row. `axis` is the world axis the labels run
+// along, `origin` is subtracted from the printed values (heights count from the floor).
 struct TickRow {
     int axis;
     glm::vec3 base;     // a point on the edge (its `axis` coordinate is ignored)
     glm::vec3 outward;  // offset from the edge to the labels
     double lo, hi, step, origin;
     const char* name;
+    bool name_at_low_end;  // the floor rows meet at the corner nearest the camera: name the far end
 };
 
 void label_ticks(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane, const TickRow& row) {
@@ -71,16 +72,20 @@ void label_ticks(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane, co
         if (std::llround(value / row.step) % every != 0) continue;
         centered_text(dl, to_imvec(at), label_color, format_metres(value).c_str());
     }
-    const ImU32 name_color = to_u32(axis_colors[static_cast<std::size_t>(row.axis)], 0.95f);
-    if (row.axis == 1) {
-        // A vertical scale: its name goes one line above the top label.
-        const ScreenPoint& top = ticks.back().second;
-        centered_text(dl, ImVec2(top.x, top.y - ImGui::GetTextLineHeightWithSpacing()), name_color, row.name);
-        return;
-    }
-    glm::vec3 mid = row.base + 2.6f * row.outward;
-    mid[row.axis] = static_cast<float>(0.5 * (row.lo + row.hi));
-    if (auto s = project(cam, pane, mid)) centered_text(dl, to_imvec(*s), name_color, row.name);
+    // The name continues the row on screen, past its end label.
+    const ScreenPoint& end = row.name_at_low_end ? ticks.front().second : ticks.back().second;
+    const ScreenPoint& inner = row.name_at_low_end ? ticks[1].second : ticks[ticks.size() - 2].second;
+    ImVec2 dir(end.x - inner.x, end.y - inner.y);
+    const float len = std::hypot(dir.x, dir.y);
+    dir = len > 1e-3f ? ImVec2(dir.x / len, dir.y / len) : ImVec2(0.0f, -1.0f);
+    const ImVec2 name_size = ImGui::CalcTextSize(row.name);
+    // Distance from the end label's centre to the name's centre along `dir`, clear of both boxes.
+    const float reach = 0.5f * (std::abs(dir.x) * (name_size.x + 28.0f) + std::abs(dir.y) * (name_size.y + 14.0f)) + 8.0f;
+    // Kept inside the pane, where a narrow split pane would otherwise cut it off.
+    const float half_w = 0.5f * name_size.x + 4.0f, half_h = 0.5f * name_size.y + 2.0f;
+    const ImVec2 at(std::clamp(end.x + dir.x * reach, pane.x + half_w, std::max(pane.right() - half_w, pane.x + half_w)),
+                    std::clamp(end.y + dir.y * reach, pane.y + half_h, std::max(pane.bottom() - half_h, pane.y + half_h)));
+    centered_text(dl, at, to_u32(axis_colors[static_cast<std::size_t>(row.axis)], 0.95f), row.name);
 }
 
 void draw_metre_marks(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane, const Room& room) {
@@ -95,12 +100,14 @@ void draw_metre_marks(ImDrawList* dl, const CameraMatrices& cam, const Rect& pan
     const float margin = 0.045f * std::max({hi.x - lo.x, hi.z - lo.z});
     const float out_z = eye.z >= centre.z ? margin : -margin;
     const float out_x = eye.x >= centre.x ? margin : -margin;
-    label_ticks(dl, cam, pane, {0, {0.0f, lo.y, near_z}, {0.0f, 0.0f, out_z}, lo.x, hi.x, step, 0.0, "x (m)"});
-    label_ticks(dl, cam, pane, {2, {near_x, lo.y, 0.0f}, {out_x, 0.0f, 0.0f}, lo.z, hi.z, step, 0.0, "z (m)"});
+    label_ticks(dl, cam, pane,
+                {0, {0.0f, lo.y, near_z}, {0.0f, 0.0f, out_z}, lo.x, hi.x, step, 0.0, "x (m)", far_x < centre.x});
+    label_ticks(dl, cam, pane,
+                {2, {near_x, lo.y, 0.0f}, {out_x, 0.0f, 0.0f}, lo.z, hi.z, step, 0.0, "z (m)", far_z < centre.z});
     // Height above the floor on the farthest vertical edge, clear of both floor rows; its 0 would
     // sit on the floor corner, so it starts one step up.
     const glm::vec3 corner_out = glm::normalize(glm::vec3(far_x - centre.x, 0.0f, far_z - centre.z)) * margin;
-    label_ticks(dl, cam, pane, {1, {far_x, 0.0f, far_z}, corner_out, lo.y + step, hi.y, step, lo.y, "height (m)"});
+    label_ticks(dl, cam, pane, {1, {far_x, 0.0f, far_z}, corner_out, lo.y + step, hi.y, step, lo.y, "height (m)", false});
 }
 
 void draw_axis_gizmo(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane) {
@@ -217,7 +224,8 @@ void show_particle_tooltip(const ui::LabSession& session, const ParticleRef& p) 
     ImGui::BeginTooltip();
     ImGui::ColorButton("##colour", ImVec4(c.r, c.g, c.b, 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
     ImGui::SameLine();
-    const std::string& label = run.model().label;
+    // The variant's name matters only when there are several.
+    const std::string label = e.variant_count() > 1 ? run.model().label : std::string();
     ImGui::Text("Particle %zu%s%s", i, label.empty() ? "" : "  -  ", label.c_str());
     ImGui::Separator();
     std::snprintf(buf, sizeof buf, "(%.3f, %.3f, %.3f) m", x.x, x.y, x.z);

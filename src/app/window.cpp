@@ -41,49 +41,45 @@ AppWindow::AppWindow(int width, int height, const std::string& title) {
             height = std::min(height, mode->height);
         }
     }
-    window_ = try_create(width, height, title, 4);
-    if (!window_) {
-        // Some X servers offer no multisampled visual: fall back to a plain one quietly.
-        glfwSetErrorCallback(nullptr);
-        window_ = try_create(width, height, title, 0);
-        glfwSetErrorCallback(report_glfw_error);
+    // A CPU rasteriser (llvmpipe under Xvfb or without a GPU driver) pays about twice the frame
+    // time for 4x MSAA; lines stay smooth without it (their shader anti-aliases them).
+    const bool want_msaa = std::getenv("PL_FORCE_MSAA") != nullptr || !software_renderer();
+    if (want_msaa) {
+        window_ = try_create(width, height, title, 4);
+        if (!window_) glfwSetErrorCallback(nullptr);  // no multisampled visual: fall back quietly
     }
+    if (!window_) window_ = try_create(width, height, title, 0);
+    glfwSetErrorCallback(report_glfw_error);
     if (!window_) {
         glfwTerminate();
         throw std::runtime_error("cannot create a window with an OpenGL 3.3 core context");
     }
-    load_gl();
-    if (software_renderer() && !std::getenv("PL_FORCE_MSAA")) {
-        // A CPU rasteriser (llvmpipe under Xvfb or without a GPU driver) pays about 2x frame time
-        // for 4x MSAA; lines stay smooth without it (their shader anti-aliases them).
-        glfwDestroyWindow(window_);
-        window_ = try_create(width, height, title, 0);
-        if (!window_) {
-            glfwTerminate();
-            throw std::runtime_error("cannot create a window with an OpenGL 3.3 core context");
-        }
-        load_gl();
-    }
-    glfwShowWindow(window_);
-    GLint samples = 0;
-    glGetIntegerv(GL_SAMPLES, &samples);
-    multisampled_ = samples > 1;
-    if (multisampled_) glEnable(GL_MULTISAMPLE);
-    glfwSwapInterval(1);
-}
-
-void AppWindow::load_gl() {
     glfwMakeContextCurrent(window_);
     if (gladLoadGL(glfwGetProcAddress) == 0) {
         glfwDestroyWindow(window_);
         glfwTerminate();
         throw std::runtime_error("cannot load the OpenGL 3.3 functions");
     }
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
+    multisampled_ = samples > 1;
+    if (multisampled_) glEnable(GL_MULTISAMPLE);
+    glfwSwapInterval(1);
+    glfwShowWindow(window_);
 }
 
-bool AppWindow::software_renderer() const {
-    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const std::string name = renderer ? renderer : "";
+bool AppWindow::software_renderer() {
+    // A hidden probe context, so the real window is created once, with the right visual.
+    GLFWwindow* probe = try_create(64, 64, "OpenGL probe", 0);
+    if (!probe) return false;
+    glfwMakeContextCurrent(probe);
+    std::string name;
+    if (gladLoadGL(glfwGetProcAddress) != 0) {
+        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        name = renderer ? renderer : "";
+    }
+    glfwMakeContextCurrent(nullptr);
+    glfwDestroyWindow(probe);
     for (const char* cpu : {"llvmpipe", "softpipe", "swrast", "SwiftShader"})
         if (name.find(cpu) != std::string::npos) return true;
     return false;

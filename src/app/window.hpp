@@ -1,5 +1,6 @@
-// The GLFW window with an OpenGL 3.3 core context (4x MSAA when the system offers it) and the
-// glad loader.
+// The GLFW window with an OpenGL 3.3 core context and the glad loader. 4x MSAA when the system
+// offers it, except on a CPU rasteriser (set PL_FORCE_MSAA to have it there too, e.g. for
+// screenshots).
 #pragma once
 
 #include <string>
@@ -19,10 +20,8 @@ public:
     GLFWwindow* handle() const { return window_; }
     bool multisampled() const { return multisampled_; }
 
-    bool software_renderer() const;  // a CPU rasteriser such as Mesa's llvmpipe
-
 private:
-    void load_gl();
+    static bool software_renderer();  // a CPU rasteriser such as Mesa's llvmpipe
 
     GLFWwindow* window_ = nullptr;
     bool multisampled_ = false;

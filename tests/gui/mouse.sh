@@ -12,12 +12,15 @@ STATE="$WORK/state.json"
 PRESET="$SRC/presets/launch_velocities.json"
 
 start_app "$PRESET" --frames 1000000 --dump-state "$STATE"
+# Paused and reset, the five balls stand on their start line 1 m apart: a deterministic target.
 press space
-wait_for_state "$STATE" 'd["paused"] and d["variants"][0]["particles"][3]["screen"] is not None' \
-    "no paused state with particle 3 on screen"
+wait_for_state "$STATE" 'd["paused"]' "space did not pause"
+press r
+wait_for_state "$STATE" 'd["base_steps"] == 0 and d["variants"][0]["particles"][3]["screen"] is not None' \
+    "no reset state with particle 3 on screen"
 camera() { json_get "$STATE" 'd["view"]["camera"]'; }
 
-# Click particle 3 (it is at rest on its start line, so it stays put while paused).
+# Click particle 3.
 read -r px py < <(json_get "$STATE" '" ".join(str(round(c)) for c in d["variants"][0]["particles"][3]["screen"])')
 xdotool mousemove --window "$APP_WINDOW" "$px" "$py" click 1
 wait_for_state "$STATE" 'd["selected_particle"] == 3 and d["selected_variant"] == 0' "clicking particle 3 did not select it"
