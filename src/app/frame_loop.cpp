@@ -5,6 +5,7 @@
 #include "app/imgui_setup.hpp"
 #include "app/input_events.hpp"
 #include "app/layout.hpp"
+#include "app/particle_tooltip.hpp"
 #include "app/physics_driver.hpp"
 #include "app/scene_renderer.hpp"
 #include "app/screenshot.hpp"
@@ -28,6 +29,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <thread>
 
 namespace pl::app {
@@ -79,6 +81,22 @@ void smooth(double& average, double sample, double dt) {
     average = average == 0.0 ? sample : average + a * (sample - average);
 }
 
+// This frame's steps (after the requests: a reset must not be followed by steps from the old
+// state) and what the status bar shows about them.
+void run_physics(ui::LabSession& s, double real_dt, double budget_s, const std::function<void()>& after_step) {
+    FrameAdvance advance;
+    double simulated = 0.0;
+    if (s.experiment && !s.paused) {
+        const double t_before = s.experiment->time();
+        advance = advance_frame(*s.experiment, real_dt, s.time_scale, budget_s, after_step);
+        simulated = s.experiment->time() - t_before;
+    }
+    s.frame.substeps = advance.steps;
+    s.frame.behind = advance.behind;
+    s.frame.physics_ms = advance.physics_ms;
+    smooth(s.frame.real_time_factor, simulated / std::max(real_dt, 1e-9), real_dt);
+}
+
 void dump_state(const GuiOptions& o, const ui::LabSession& s, long frames, const ViewSnapshot& view) {
     if (!o.dump_state) return;
     const std::string error = write_state_dump(*o.dump_state, s, frames, view);
@@ -125,8 +143,9 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
     view.camera = (view.file ? load_camera(*view.file, view.room) : std::nullopt).value_or(framing_camera(view.room));
 
     TrailHistory trails;
-    auto sample_trails = [&] {
-        if (session.experiment) trails.sample(*session.experiment, static_cast<std::size_t>(std::max(session.selected_particle, 0)));
+    const std::function<void()> sample_trails = [&] {
+        if (!session.experiment) return;
+        trails.sample(*session.experiment, static_cast<std::size_t>(std::max(session.selected_particle, 0)));
     };
     PanelCollapse collapsed;
     ViewDrag drag;
@@ -155,24 +174,11 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         const ImGuiIO& io = ImGui::GetIO();
         apply_view_command(apply_shortcuts(input.keys, io.WantTextInput, io.WantCaptureKeyboard, session), view, session);
         input.keys.clear();
-        handle_view_keys(window.handle(), view.camera, static_cast<float>(real_dt));
+        handle_view_keys(window.handle(), input, view.camera, static_cast<float>(real_dt));
 
-        // Physics: requests first (a reset must not be followed by this frame's steps from the
-        // old state), then the frame's steps.
         trails.sync(session.experiment.get());
         if (perform_state_requests(session, sample_trails).state_jumped) trails.clear();
-        FrameAdvance advance;
-        if (session.experiment && !session.paused) {
-            const double t_before = session.experiment->time();
-            advance = advance_frame(*session.experiment, real_dt, session.time_scale, deterministic ? 0.0 : physics_budget_s,
-                                    sample_trails);
-            smooth(session.frame.real_time_factor, (session.experiment->time() - t_before) / std::max(real_dt, 1e-9), real_dt);
-        } else {
-            smooth(session.frame.real_time_factor, 0.0, real_dt);
-        }
-        session.frame.substeps = advance.steps;
-        session.frame.behind = advance.behind;
-        session.frame.physics_ms = advance.physics_ms;
+        run_physics(session, real_dt, deterministic ? 0.0 : physics_budget_s, sample_trails);
         smooth(session.frame.fps, 1.0 / std::max(measured_dt, 1e-6), measured_dt);
         ui::record_frame(session);
         follow_room(view, session);

@@ -2,6 +2,7 @@
 // within one frame (e.g. xdotool), so keys are queued from the callback rather than polled.
 #pragma once
 
+#include <bitset>
 #include <vector>
 
 struct GLFWwindow;
@@ -15,6 +16,9 @@ struct KeyPress {
 
 struct InputQueue {
     std::vector<KeyPress> keys;
+    // Keys pressed together with Ctrl, Alt or Super, until released: a shortcut (Ctrl+Q), never
+    // a held camera key, even if the modifier is let go first.
+    std::bitset<512> chorded;
 };
 
 // Install before ImGui's GLFW backend so it chains to this callback.

@@ -86,8 +86,10 @@ void RoomRenderer::draw_walls(const Room& room, const CameraMatrices& camera) {
             c.a *= 1.0f - 0.6f * up;
             return c;
         };
-        const std::array<int, 4>& q = faces[f];
-        for (int i : {0, 2, 1, 0, 3, 2}) vertices.push_back({corner(q[static_cast<std::size_t>(i)]), color_at(corner(q[static_cast<std::size_t>(i)]))});
+        for (std::size_t k : {0u, 2u, 1u, 0u, 3u, 2u}) {
+            const glm::vec3 p = corner(faces[f][k]);
+            vertices.push_back({p, color_at(p)});
+        }
     }
     upload_stream(GL_ARRAY_BUFFER, buffer_.get(), vertices.data(), vertices.size() * sizeof(SurfaceVertex));
     program_.use();

@@ -70,14 +70,16 @@ std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& ca
     return HoveredParticle{*hit, *pane};
 }
 
-void handle_view_keys(GLFWwindow* window, OrbitCamera& camera, float real_dt) {
+void handle_view_keys(GLFWwindow* window, const InputQueue& input, OrbitCamera& camera, float real_dt) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureKeyboard || io.WantTextInput) return;
-    auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+    auto held = [&](int key) {
+        return glfwGetKey(window, key) == GLFW_PRESS && !input.chorded.test(static_cast<std::size_t>(key)) ? 1.0f : 0.0f;
+    };
     // Ctrl+Q quits, Ctrl+S saves...: letters held with a modifier are shortcuts, not flying.
     for (int modifier : {GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL, GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT,
                          GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER})
-        if (held(modifier) > 0.0f) return;
+        if (glfwGetKey(window, modifier) == GLFW_PRESS) return;
     const glm::vec3 move(held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q),
                          held(GLFW_KEY_W) - held(GLFW_KEY_S));
     if (move != glm::vec3(0.0f)) fly(camera, move, real_dt);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "app/camera.hpp"
+#include "app/input_events.hpp"
 #include "app/view_overlay.hpp"
 #include "app/view_panes.hpp"
 #include "ui/lab_session.hpp"
@@ -26,7 +27,8 @@ struct ViewDrag {
 std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& camera, const std::vector<ViewPane>& panes,
                                                  ui::LabSession& session);
 
-// Held keys move the camera (call once per frame with the real frame time).
-void handle_view_keys(GLFWwindow* window, OrbitCamera& camera, float real_dt);
+// Held keys move the camera (call once per frame with the real frame time); keys that are part
+// of a shortcut chord (`input.chorded`) do not.
+void handle_view_keys(GLFWwindow* window, const InputQueue& input, OrbitCamera& camera, float real_dt);
 
 }  // namespace pl::app

@@ -1,6 +1,6 @@
 // What is drawn over the 3D view with ImGui: metre labels on the floor edges and a height scale,
 // the axis gizmo, pane labels or the variant legend, time and pause state, selection and hover
-// rings, and the hovered particle's state in a tooltip.
+// rings.
 #pragma once
 
 #include "app/camera.hpp"
@@ -20,7 +20,5 @@ struct HoveredParticle {
 
 void draw_view_overlay(const ui::LabSession& session, const std::vector<ViewPane>& panes, const OrbitCamera& camera,
                        const std::optional<HoveredParticle>& hovered);
-
-void show_particle_tooltip(const ui::LabSession& session, const ParticleRef& p);
 
 }  // namespace pl::app
