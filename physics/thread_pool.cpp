@@ -55,17 +55,21 @@ void ThreadPool::grow(std::size_t workers) {
     while (workers_.size() < workers) {
         slots_.push_back(std::make_unique<Slot>());
         Slot& slot = *slots_.back();
-        workers_.emplace_back([&slot] { worker_loop(slot); });
+        const std::size_t participant = workers_.size() + 1;
+        workers_.emplace_back([&slot, participant] { worker_loop(slot, participant); });
     }
 }
 
-void ThreadPool::work(Job& job) {
-    for (std::size_t k = job.next.fetch_add(1, std::memory_order_relaxed); k < job.tasks;
-         k = job.next.fetch_add(1, std::memory_order_relaxed))
-        job.fn(job.ctx, k);
+void ThreadPool::work(Job& job, std::size_t participant) {
+    for (std::size_t q = 0; q < job.participants; ++q) {
+        Block& b = job.blocks[(participant + q) % job.participants];
+        for (std::size_t k = b.next.fetch_add(1, std::memory_order_relaxed); k < b.end;
+             k = b.next.fetch_add(1, std::memory_order_relaxed))
+            job.fn(job.ctx, k);
+    }
 }
 
-void ThreadPool::worker_loop(Slot& slot) {
+void ThreadPool::worker_loop(Slot& slot, std::size_t participant) {
     std::uint64_t seen = 0;
     for (;;) {
         wait_for_change(slot.go, seen);
@@ -74,7 +78,7 @@ void ThreadPool::worker_loop(Slot& slot) {
         std::uint64_t posted = Slot::tag(seen, Slot::posted);
         if (!slot.state.compare_exchange_strong(posted, Slot::tag(seen, Slot::claimed), std::memory_order_acq_rel))
             continue;  // withdrawn: the caller has done the work already
-        work(*slot.job);
+        work(*slot.job, participant);
         slot.done.store(seen, std::memory_order_release);
         slot.done.notify_one();
     }
@@ -89,10 +93,20 @@ void ThreadPool::run_erased(std::size_t tasks, std::size_t threads, TaskFn fn, v
         return;
     }
     grow(helpers);
+    const std::size_t participants = helpers + 1;
+    if (block_capacity_ < participants) {
+        blocks_ = std::make_unique<Block[]>(participants);
+        block_capacity_ = participants;
+    }
+    for (std::size_t p = 0; p < participants; ++p) {
+        blocks_[p].next.store(tasks * p / participants, std::memory_order_relaxed);
+        blocks_[p].end = tasks * (p + 1) / participants;
+    }
     Job job;
     job.fn = fn;
     job.ctx = ctx;
-    job.tasks = tasks;
+    job.blocks = blocks_.get();
+    job.participants = participants;
     for (std::size_t w = 0; w < helpers; ++w) {
         Slot& slot = *slots_[w];
         const std::uint64_t handed = slot.go.load(std::memory_order_relaxed) + 1;
@@ -101,7 +115,7 @@ void ThreadPool::run_erased(std::size_t tasks, std::size_t threads, TaskFn fn, v
         slot.go.store(handed, std::memory_order_release);
         slot.go.notify_one();
     }
-    work(job);
+    work(job, 0);
     for (std::size_t w = 0; w < helpers; ++w) {
         Slot& slot = *slots_[w];
         const std::uint64_t handed = slot.go.load(std::memory_order_relaxed);

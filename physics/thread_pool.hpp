@@ -26,6 +26,9 @@ public:
 
     // Runs task(k) once for every k in [0, tasks), spread over the calling thread and up to
     // `threads - 1` workers; returns when every task has finished. Tasks must not throw.
+    // Each thread first runs its own contiguous block of tasks (the same block job after job,
+    // so the data of a simulation's particle ranges stays in that core's cache), then takes
+    // over tasks of threads that are slower or were not scheduled.
     // When another caller is using the pool (e.g. a background study), the tasks run on the
     // calling thread instead: slower, never a deadlock, and the same results.
     template <class Task>
@@ -37,11 +40,16 @@ public:
 
 private:
     using TaskFn = void (*)(void*, std::size_t);
+    // Next task of one participant's block [next, end); on its own cache line.
+    struct alignas(64) Block {
+        std::atomic<std::size_t> next{0};
+        std::size_t end = 0;
+    };
     struct Job {
         TaskFn fn = nullptr;
         void* ctx = nullptr;
-        std::size_t tasks = 0;
-        std::atomic<std::size_t> next{0};
+        Block* blocks = nullptr;
+        std::size_t participants = 0;  // the caller is 0, worker w is w + 1
     };
     // One per worker: the caller hands job number g over by posting it in `state` and setting
     // `go` to g; the worker claims it in `state`, runs tasks and sets `done` to g. After its own
@@ -58,11 +66,13 @@ private:
 
     void run_erased(std::size_t tasks, std::size_t threads, TaskFn fn, void* ctx);
     void grow(std::size_t workers);
-    static void work(Job& job);
-    static void worker_loop(Slot& slot);
+    static void work(Job& job, std::size_t participant);
+    static void worker_loop(Slot& slot, std::size_t participant);
 
     std::mutex submit_;  // one job at a time
     std::vector<std::unique_ptr<Slot>> slots_;
+    std::unique_ptr<Block[]> blocks_;
+    std::size_t block_capacity_ = 0;
     std::vector<std::thread> workers_;
 };
 
