@@ -1,6 +1,7 @@
 // Engine throughput: Simulation::step() as the GUI and CLI call it (the stepping kernel, then
-// the event cap and the monitor: NaN guard, drag validity and stability checks), and the
-// stepping kernel alone (fast_kernel.hpp), to show where the time goes.
+// the event cap and the monitor: NaN guard, drag validity and stability checks), the stepping
+// kernel alone (fast_kernel.hpp), and the step with the generic reference kernel, to show
+// where the time goes.
 #include "physics/fast_kernel.hpp"
 #include "physics/simulation.hpp"
 #include "physics/thread_pool.hpp"
@@ -16,12 +17,19 @@ namespace pl::bench {
 
 namespace {
 
-// kernel_only: calls the kernel Simulation::step() would call, without the bookkeeping after it.
-void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads, bool kernel_only) {
+enum class Timed {
+    step,         // Simulation::step()
+    kernel_only,  // the kernel Simulation::step() calls, without the bookkeeping after it
+    generic_step  // Simulation::step() with the generic reference kernel
+};
+
+void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads, Timed timed) {
     const StepKernel kernel = pick_fast_kernel(scene.model);
+    const bool kernel_only = timed == Timed::kernel_only;
     auto fresh = [&] {
         Simulation sim(scene.model, scene.particles);
         sim.set_threads(threads);
+        if (timed == Timed::generic_step) sim.set_kernel(KernelChoice::generic);
         return sim;
     };
     Simulation sim = fresh();
@@ -43,10 +51,10 @@ void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads
 }
 
 void register_engine(Workload w, std::size_t n, int threads, Method method, const std::string& name,
-                     bool kernel_only = false) {
-    benchmark::RegisterBenchmark(name.c_str(), [w, n, threads, method, kernel_only](benchmark::State& state) {
+                     Timed timed = Timed::step) {
+    benchmark::RegisterBenchmark(name.c_str(), [w, n, threads, method, timed](benchmark::State& state) {
         const WorkloadScene scene = make_workload(w, n, method);
-        run_engine(state, scene, threads, kernel_only);
+        run_engine(state, scene, threads, timed);
     })->UseRealTime()->Unit(benchmark::kMicrosecond);
 }
 
@@ -68,7 +76,11 @@ void register_engine_benchmarks() {
     for (std::size_t n : sizes)
         for (int threads : thread_settings())
             register_engine(Workload::drag_walls, n, threads, Method::semi_implicit_euler,
-                            "kernel/drag_walls/n:" + size_label(n) + "/threads:" + std::to_string(threads), true);
+                            "kernel/drag_walls/n:" + size_label(n) + "/threads:" + std::to_string(threads),
+                            Timed::kernel_only);
+    for (std::size_t n : sizes)
+        register_engine(Workload::drag_walls, n, 1, Method::semi_implicit_euler,
+                        "engine_generic_kernel/drag_walls/n:" + size_label(n), Timed::generic_step);
 }
 
 void register_method_benchmarks() {

@@ -92,11 +92,12 @@ void print_comparison(const CollectingReporter& r, int all_threads) {
               r.rate("limit_hand_fused/drag_walls/n:" + size_label(n)) || r.rate("baseline_oo/drag_walls/n:" + size_label(n));
     if (!any) return;
     fmt::print("\n## Engine vs references: gravity + quadratic drag + six walls (particle-steps/s)\n\n");
-    fmt::print("engine = Simulation::step() (kernel + event cap + monitor); kernel = the stepping kernel alone.\n\n");
-    fmt::print("| n | engine | kernel | hand-fused limit | OO baseline | engine/limit | kernel/limit | engine/baseline | "
-               "limit/baseline | engine, {0} threads | speed-up | kernel, {0} threads | speed-up |\n",
+    fmt::print("engine = Simulation::step() (kernel + event cap + monitor); kernel = the stepping kernel alone; "
+               "generic = Simulation::step() with the scalar reference kernel.\n\n");
+    fmt::print("| n | engine | kernel | generic | hand-fused limit | OO baseline | engine/limit | kernel/limit | "
+               "engine/baseline | limit/baseline | engine, {0} threads | speed-up | kernel, {0} threads | speed-up |\n",
                all_threads);
-    fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (std::size_t n : sizes) {
         const std::string size = size_label(n);
         const std::string all = "/threads:" + std::to_string(all_threads);
@@ -106,9 +107,11 @@ void print_comparison(const CollectingReporter& r, int all_threads) {
         const auto kernel_all = all_threads > 1 ? r.rate("kernel/drag_walls/n:" + size + all) : std::nullopt;
         const auto limit = r.rate("limit_hand_fused/drag_walls/n:" + size);
         const auto baseline = r.rate("baseline_oo/drag_walls/n:" + size);
+        const auto generic = r.rate("engine_generic_kernel/drag_walls/n:" + size);
         if (!engine && !kernel && !limit && !baseline) continue;
-        fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", size, rate_text(engine),
-                   rate_text(kernel), rate_text(limit), rate_text(baseline), ratio_text(engine, limit),
+        fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", size,
+                   rate_text(engine), rate_text(kernel), rate_text(generic), rate_text(limit), rate_text(baseline),
+                   ratio_text(engine, limit),
                    ratio_text(kernel, limit), ratio_text(engine, baseline), ratio_text(limit, baseline),
                    rate_text(engine_all), ratio_text(engine_all, engine, "x"), rate_text(kernel_all),
                    ratio_text(kernel_all, kernel, "x"));
