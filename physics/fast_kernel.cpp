@@ -32,11 +32,6 @@ inline bool all_finite(double a, double b, double c, double d, double e) {
     return std::abs(a) + std::abs(b) + std::abs(c) + std::abs(d) + std::abs(e) <= DBL_MAX;
 }
 
-bool finite_state(const FlightState& y) {
-    return std::isfinite(y.x.x) && std::isfinite(y.x.y) && std::isfinite(y.x.z) && std::isfinite(y.v.x) &&
-           std::isfinite(y.v.y) && std::isfinite(y.v.z) && std::isfinite(y.drag_loss) && std::isfinite(y.wind_gain);
-}
-
 // What one range of particles produced besides its state: kept apart per range and merged in
 // range order, so the merged result does not depend on which thread ran which range.
 struct RangeOutput {
@@ -272,31 +267,16 @@ private:
         if (s_.frozen[i]) return;
         const auto id = static_cast<std::uint32_t>(i);
         f_.drag = {s_.drag_k[i], s_.drag_re_scale[i]};
-        ParticleStep p;
-        p.y.x = s_.position(i);
-        p.y.v = s_.velocity(i);
-        p.radius = s_.radius[i];
-        p.resting = s_.resting[i];
-        std::vector<double>& hints = sim_.adaptive_step_hint();
-        if (adaptive_on_) p.step_hint = hints[i];
+        std::vector<double>* hints = adaptive_on_ ? &sim_.adaptive_step_hint() : nullptr;
+        ParticleStep p = load_step(s_, i, hints);
         stepper_.advance(p, id, t0_, h_);
-        if (!finite_state(p.y)) {
+        if (!is_finite(p.y)) {
             s_.frozen[i] = 1;
             out_.events->push_back({t0_, id, -1, EventKind::frozen, glm::length(s_.velocity(i)), 0.0});
             out_.frozen.push_back(id);
             return;
         }
-        s_.set_position(i, p.y.x);
-        s_.set_velocity(i, p.y.v);
-        s_.resting[i] = p.resting;
-        if (adaptive_on_) hints[i] = p.step_hint;
-        const double mass = s_.mass[i];
-        s_.dissipated_bounce[i] += mass * p.bounce_loss;
-        s_.dissipated_friction[i] += mass * p.friction_loss;
-        if constexpr (Drag != DragModel::none) {
-            s_.dissipated_drag[i] += mass * p.y.drag_loss;
-            if constexpr (HasWind) s_.wind_work[i] += mass * p.y.wind_gain;
-        }
+        store_step<Drag, HasWind>(s_, i, p, hints);
     }
 
     Simulation& sim_;

@@ -39,6 +39,38 @@ struct ParticleStep {
     double bounce_loss = 0.0, friction_loss = 0.0;  // per kg, during this step
 };
 
+inline bool is_finite(const FlightState& y) {
+    return std::isfinite(y.x.x) && std::isfinite(y.x.y) && std::isfinite(y.x.z) && std::isfinite(y.v.x) &&
+           std::isfinite(y.v.y) && std::isfinite(y.v.z) && std::isfinite(y.drag_loss) && std::isfinite(y.wind_gain);
+}
+
+// Particle i of the state arrays as the stepper's working copy (`hints`: dopri5 only).
+inline ParticleStep load_step(const ParticleState& s, std::size_t i, const std::vector<double>* hints) {
+    ParticleStep p;
+    p.y.x = s.position(i);
+    p.y.v = s.velocity(i);
+    p.radius = s.radius[i];
+    p.resting = s.resting[i];
+    if (hints) p.step_hint = (*hints)[i];
+    return p;
+}
+
+// Writes a stepped particle back, adding its ledger increments (per-kg losses times the mass).
+template <DragModel Drag, bool HasWind>
+void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints) {
+    s.set_position(i, p.y.x);
+    s.set_velocity(i, p.y.v);
+    s.resting[i] = p.resting;
+    if (hints) (*hints)[i] = p.step_hint;
+    const double mass = s.mass[i];
+    s.dissipated_bounce[i] += mass * p.bounce_loss;
+    s.dissipated_friction[i] += mass * p.friction_loss;
+    if constexpr (Drag != DragModel::none) {
+        s.dissipated_drag[i] += mass * p.y.drag_loss;
+        if constexpr (HasWind) s.wind_work[i] += mass * p.y.wind_gain;
+    }
+}
+
 template <class F>
 class ParticleStepper {
 public:

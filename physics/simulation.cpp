@@ -14,10 +14,6 @@ namespace pl {
 
 namespace {
 
-bool finite(const FlightState& y) {
-    return std::isfinite(y.x.x) && std::isfinite(y.x.y) && std::isfinite(y.x.z) && std::isfinite(y.v.x) &&
-           std::isfinite(y.v.y) && std::isfinite(y.v.z) && std::isfinite(y.drag_loss) && std::isfinite(y.wind_gain);
-}
 
 // The stepping kernel for one combination of enabled force terms.
 template <DragModel Drag, bool HasWind>
@@ -40,14 +36,9 @@ void step_kernel(Simulation& sim) {
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (s.frozen[i]) continue;
         f.drag = {s.drag_k[i], s.drag_re_scale[i]};
-        ParticleStep p;
-        p.y.x = s.position(i);
-        p.y.v = s.velocity(i);
-        p.radius = s.radius[i];
-        p.resting = s.resting[i];
-        if (adaptive_on) p.step_hint = hints[i];
+        ParticleStep p = load_step(s, i, adaptive_on ? &hints : nullptr);
         stepper.advance(p, static_cast<std::uint32_t>(i), t0, h);
-        if (!finite(p.y)) {
+        if (!is_finite(p.y)) {
             // Keep the last finite state and stop stepping this particle.
             s.frozen[i] = 1;
             sim.event_sink().push_back(
@@ -58,17 +49,7 @@ void step_kernel(Simulation& sim) {
                                   i, t0));
             continue;
         }
-        s.set_position(i, p.y.x);
-        s.set_velocity(i, p.y.v);
-        s.resting[i] = p.resting;
-        if (adaptive_on) hints[i] = p.step_hint;
-        const double mass = s.mass[i];
-        s.dissipated_bounce[i] += mass * p.bounce_loss;
-        s.dissipated_friction[i] += mass * p.friction_loss;
-        if constexpr (Drag != DragModel::none) {
-            s.dissipated_drag[i] += mass * p.y.drag_loss;
-            if constexpr (HasWind) s.wind_work[i] += mass * p.y.wind_gain;
-        }
+        store_step<Drag, HasWind>(s, i, p, adaptive_on ? &hints : nullptr);
     }
     ForceCounters& c = sim.mutable_counters();
     c.gravity += f.gravity_evals;
