@@ -213,6 +213,7 @@ void help_overlay(LabSession& s) {
         {"F", "focus the selected particle"},
         {"F1 or H", "this help"},
         {"Esc", "close dialogs"},
+        {"Ctrl+S", "save the preset over its file (previous kept as .bak)"},
         {"Ctrl+Q", "quit (asks if there are unsaved changes)"},
         {"plots: drag", "scroll back in time (stops following)"},
         {"plots: double-click", "follow the latest samples again"},

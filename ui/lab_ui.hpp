@@ -17,6 +17,9 @@ void draw_control_panel(LabSession&);   // left column: preset, time, launch, sc
 void draw_plots_panel(LabSession&);     // height / speed / kinetic energy / energy ledger plots
 void draw_analysis_panel(LabSession&);  // bottom tabs: compare, events, ledger, accuracy, stability, advise, warnings
 void draw_status_bar(LabSession&);      // one line
-void draw_popups(LabSession&);          // error modal, help overlay, unsaved-changes prompt
+void draw_popups(LabSession&);
+// Saves the scene over the preset it came from (atomic, previous file kept as .bak); on failure
+// the error popup says why and nothing is lost. Ctrl+S.
+bool save_in_place(LabSession&);          // error modal, help overlay, unsaved-changes prompt
 
 }  // namespace pl::ui

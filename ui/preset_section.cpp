@@ -1,4 +1,5 @@
 #include "physics/preset_io.hpp"
+#include "ui/lab_ui.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/sections.hpp"
 
@@ -69,6 +70,14 @@ bool save_scene_to(LabSession& s, const std::filesystem::path& file) {
     s.dirty = false;
     s.status_message = "Saved " + file.string();
     return true;
+}
+
+bool save_in_place(LabSession& s) {
+    if (s.preset_path.empty()) {
+        s.status_message = "Not saved: this scene has no file yet; use Save as";
+        return false;
+    }
+    return save_scene_to(s, s.preset_path);
 }
 
 void draw_preset_section(LabSession& s) {

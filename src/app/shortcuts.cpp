@@ -1,5 +1,7 @@
 #include "app/shortcuts.hpp"
 
+#include "ui/lab_ui.hpp"
+
 #include <GLFW/glfw3.h>
 
 namespace pl::app {
@@ -30,6 +32,10 @@ ViewCommand apply_shortcuts(const std::vector<KeyPress>& keys, bool text_input_a
         }
         if ((k.mods & GLFW_MOD_CONTROL) && k.key == GLFW_KEY_Q) {
             request_quit(s);
+            continue;
+        }
+        if ((k.mods & GLFW_MOD_CONTROL) && k.key == GLFW_KEY_S) {
+            ui::save_in_place(s);
             continue;
         }
         if (keyboard_captured || (k.mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER))) continue;
