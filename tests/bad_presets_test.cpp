@@ -2,6 +2,8 @@
 // .expect sidecar names; bad files, directories and unwritable places fail clearly and lose nothing.
 #include "physics/preset_io.hpp"
 
+#include "temp_dir.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,20 +21,8 @@ namespace fs = std::filesystem;
 const fs::path catalogue_dir = fs::path(PL_SOURCE_DIR) / "tests" / "bad_presets";
 const fs::path default_preset = fs::path(PL_SOURCE_DIR) / "presets" / "default.json";
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() /
-               ("pl_bad_presets_" + std::to_string(::getpid()) + "_" + test->test_suite_name() + "_" + test->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::permissions(path, fs::perms::owner_all, fs::perm_options::add, ec);
-        fs::remove_all(path, ec);
-    }
+struct TempDir : test::TempDir {
+    TempDir() : test::TempDir("pl_bad_presets_") {}
 };
 
 std::string read_bytes(const fs::path& file) {

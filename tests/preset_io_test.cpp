@@ -2,6 +2,8 @@
 // field is written, and errors carry their JSON path.
 #include "physics/preset_io.hpp"
 
+#include "temp_dir.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,20 +23,8 @@ namespace fs = std::filesystem;
 
 const fs::path preset_dir = fs::path(PL_SOURCE_DIR) / "presets";
 
-// A fresh directory under the system temp dir, removed afterwards.
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() /
-               ("pl_preset_io_" + std::to_string(::getpid()) + "_" + test->test_suite_name() + "_" + test->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
+struct TempDir : test::TempDir {
+    TempDir() : test::TempDir("pl_preset_io_") {}
 };
 
 std::string read_bytes(const fs::path& file) {
