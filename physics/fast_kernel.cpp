@@ -221,12 +221,7 @@ public:
             if (pending_end > pending_begin) contact_phase(pending_begin, pending_end, flagged[1 - current]);
         }
         ForceCounters& c = out_.counters;
-        c.gravity += f_.gravity_evals;
-        c.drag += f_.drag_evals;
-        c.wind += f_.wind_evals;
-        c.accepted_steps += adaptive_.accepted;
-        c.rejected_steps += adaptive_.rejected;
-        c.contacts += contact_solves_;
+        add_counts(c, f_, adaptive_, contact_solves_);
         c.fast_path += fast;
         if (fast > 0) {
             // Phase 1 evaluated the forces of every finished particle once per method stage.

@@ -15,6 +15,7 @@
 #include "contact.hpp"
 #include "events.hpp"
 #include "integrators.hpp"
+#include "simulation.hpp"
 
 #include <cmath>
 #include <vector>
@@ -69,6 +70,17 @@ void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vec
         s.dissipated_drag[i] += mass * p.y.drag_loss;
         if constexpr (HasWind) s.wind_work[i] += mass * p.y.wind_gain;
     }
+}
+
+// Adds what one kernel pass counted (force evaluations, adaptive steps, contact solves).
+template <class F>
+void add_counts(ForceCounters& c, const F& forces, const AdaptiveStats& adaptive, std::uint64_t contact_solves) {
+    c.gravity += forces.gravity_evals;
+    c.drag += forces.drag_evals;
+    c.wind += forces.wind_evals;
+    c.accepted_steps += adaptive.accepted;
+    c.rejected_steps += adaptive.rejected;
+    c.contacts += contact_solves;
 }
 
 template <class F>

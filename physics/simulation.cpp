@@ -51,13 +51,7 @@ void step_kernel(Simulation& sim) {
         }
         store_step<Drag, HasWind>(s, i, p, adaptive_on ? &hints : nullptr);
     }
-    ForceCounters& c = sim.mutable_counters();
-    c.gravity += f.gravity_evals;
-    c.drag += f.drag_evals;
-    c.wind += f.wind_evals;
-    c.accepted_steps += adaptive.accepted;
-    c.rejected_steps += adaptive.rejected;
-    c.contacts += contact_solves;
+    add_counts(sim.mutable_counters(), f, adaptive, contact_solves);
 }
 
 template <DragModel Drag>
