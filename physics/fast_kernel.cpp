@@ -98,14 +98,16 @@ void blocked_lanes(const ParticleState& s, std::size_t begin, std::size_t end, L
 }
 
 // Phase 1 for particles [begin, end): see fast_kernel.hpp. Writes flagged[i - begin] and
-// returns the number of particles it finished.
-template <Flight M, DragModel Drag, bool HasWind>
+// returns the number of particles it finished. Identical: every particle has the mass, radius
+// and drag coefficients of particle 0, so they are read once instead of streamed per particle.
+template <Flight M, DragModel Drag, bool HasWind, bool Identical>
 [[gnu::flatten]] std::size_t flight_chunk(ParticleState& s, std::size_t begin, std::size_t end,
-                                          const Forces<Drag, HasWind>& forces, const RoomBounds& bounds, double t0,
+                                          const Forces<Drag, HasWind>& forces, const RoomBounds& room, double t0,
                                           double h, const LaneMask* blocked, LaneMask* flagged) {
     // Local copies the stores below provably cannot alias.
-    const RoomBounds room = bounds;
     const double gx = forces.gravity.x, gy = forces.gravity.y, gz = forces.gravity.z;
+    const double lo_x = room.lo.x, lo_y = room.lo.y, lo_z = room.lo.z;
+    const double hi_x = room.hi.x, hi_y = room.hi.y, hi_z = room.hi.z;
     const WindField* const wind = forces.wind;
     double* const px = s.x.data();
     double* const py = s.y.data();
@@ -119,6 +121,7 @@ template <Flight M, DragModel Drag, bool HasWind>
     const double* const radius = s.radius.data();
     const double* const drag_k = s.drag_k.data();
     const double* const re_scale = s.drag_re_scale.data();
+    const double mass0 = mass[0], radius0 = radius[0], k0 = drag_k[0], re_scale0 = re_scale[0];
     double wx[fast_chunk], wy[fast_chunk], wz[fast_chunk];
     if constexpr (wind_ahead<M, HasWind>) {
         for (std::size_t i = begin; i < end; ++i) {
@@ -137,18 +140,20 @@ template <Flight M, DragModel Drag, bool HasWind>
             w[1] = wy[i - begin];
             w[2] = wz[i - begin];
         }
+        const double m = Identical ? mass0 : mass[i];
+        const double r = Identical ? radius0 : radius[i];
         FlightForces<M, Drag, HasWind> f;
-        set_forces(f, gx, gy, gz, wind, drag_k[i], re_scale[i], w[0], w[1], w[2]);
+        set_forces(f, gx, gy, gz, wind, Identical ? k0 : drag_k[i], Identical ? re_scale0 : re_scale[i], w[0], w[1],
+                   w[2]);
         FlightState y0;
         y0.x = Vec3(px[i], py[i], pz[i]);
         y0.v = Vec3(vx[i], vy[i], vz[i]);
         const FlightState y1 = fixed_step<M>(y0, t0, h, f);
-        const double r = radius[i];
-        // Exactly the generic stepper's "no wall reached" test, wall by wall. It also implies a
-        // finite position (the walls are finite planes), so only the rest is checked below.
-        const bool inside = (room.distance(0, y1.x, r) >= 0.0) & (room.distance(1, y1.x, r) >= 0.0) &
-                            (room.distance(2, y1.x, r) >= 0.0) & (room.distance(3, y1.x, r) >= 0.0) &
-                            (room.distance(4, y1.x, r) >= 0.0) & (room.distance(5, y1.x, r) >= 0.0);
+        // The generic stepper's "no wall reached" test, RoomBounds::distance(w, x, r) >= 0 for
+        // every wall, as x >= lo + r and x <= hi - r: the sign of a difference is exact, so the
+        // same decision. It also implies a finite position, so only the rest is checked below.
+        const bool inside = (y1.x.x >= lo_x + r) & (y1.x.x <= hi_x - r) & (y1.x.y >= lo_y + r) &
+                            (y1.x.y <= hi_y - r) & (y1.x.z >= lo_z + r) & (y1.x.z <= hi_z - r);
         const bool finite = all_finite(y1.v.x, y1.v.y, y1.v.z, y1.drag_loss, y1.wind_gain);
         const bool take = inside & finite & (blocked[i - begin] == 0);
         px[i] = take ? y1.x.x : px[i];
@@ -160,8 +165,8 @@ template <Flight M, DragModel Drag, bool HasWind>
         // The generic kernel also adds mass * 0 to the bounce and friction ledgers, which
         // leaves them unchanged (they start at +0 and never become -0): skipped here.
         if constexpr (Drag != DragModel::none) {
-            drag_loss[i] = take ? drag_loss[i] + mass[i] * y1.drag_loss : drag_loss[i];
-            if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + mass[i] * y1.wind_gain : wind_work[i];
+            drag_loss[i] = take ? drag_loss[i] + m * y1.drag_loss : drag_loss[i];
+            if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + m * y1.wind_gain : wind_work[i];
         }
         flagged[i - begin] = !take;
         finished += take;
@@ -177,6 +182,7 @@ public:
     RangeStepper(Simulation& sim, RangeOutput& out)
         : sim_(sim), s_(sim.mutable_state()), m_(sim.model()), room_(m_.room), out_(out),
           adaptive_on_(m_.integrator.method == Method::dopri5 && m_.integrator.adaptive),
+          identical_(sim.identical_particles()),
           ctx_{&room_, &m_.contact, m_.integrator.method, m_.integrator.rtol, m_.integrator.atol, out.events,
                adaptive_on_ ? &adaptive_ : nullptr, &contact_solves_},
           stepper_(ctx_, f_), t0_(sim.time()), h_(m_.integrator.dt) {
@@ -200,7 +206,10 @@ public:
                 const std::size_t c_end = std::min(end, c + fast_chunk);
                 blocked_lanes(s_, c, c_end, blocked);
                 const std::size_t finished =
-                    flight_chunk<M>(s_, c, c_end, f_, room_, t0_, h_, blocked, flagged[current]);
+                    identical_ ? flight_chunk<M, Drag, HasWind, true>(s_, c, c_end, f_, room_, t0_, h_, blocked,
+                                                                     flagged[current])
+                               : flight_chunk<M, Drag, HasWind, false>(s_, c, c_end, f_, room_, t0_, h_, blocked,
+                                                                      flagged[current]);
                 fast += finished;
                 if (pending_end > pending_begin) contact_phase(pending_begin, pending_end, flagged[1 - current]);
                 pending_begin = pending_end = c_end;
@@ -280,6 +289,7 @@ private:
     const RoomBounds room_;
     RangeOutput& out_;
     const bool adaptive_on_;
+    const bool identical_;
     AdaptiveStats adaptive_;
     std::uint64_t contact_solves_ = 0;
     F f_;
@@ -303,13 +313,6 @@ void merge(Simulation& sim, const RangeOutput& out) {
                   fmt::format("particle {} frozen at t = {:.6g} s: its state became non-finite (NaN/Inf) "
                               "during the step; last finite state kept",
                               i, sim.time()));
-}
-
-// First particle of range k of `ranges`; boundaries on multiples of 64 particles keep the
-// threads' stores off each other's cache lines.
-std::size_t range_begin(std::size_t n, std::size_t ranges, std::size_t k) {
-    if (k >= ranges) return n;
-    return (n * k / ranges) & ~std::size_t{63};
 }
 
 template <Flight M, DragModel Drag, bool HasWind>
@@ -379,6 +382,12 @@ StepKernel pick_fast_kernel(const Model& m) {
         case Method::exponential: return pick_forces<Flight::none>(m);
     }
     return pick_forces<Flight::none>(m);
+}
+
+// Boundaries on multiples of 64 particles keep the threads' stores off each other's cache lines.
+std::size_t range_begin(std::size_t n, std::size_t ranges, std::size_t k) {
+    if (k >= ranges) return n;
+    return (n * k / ranges) & ~std::size_t{63};
 }
 
 std::size_t thread_count(int threads) { return static_cast<std::size_t>(threads > 0 ? threads : hardware_threads()); }

@@ -35,6 +35,8 @@ std::size_t thread_count(int threads);
 // Number of contiguous particle ranges a step of n particles is split into for a `threads`
 // setting: 1 on one thread or below 2 * min_particles_per_range particles.
 std::size_t particle_ranges(std::size_t n, int threads);
+// First particle of range k of `ranges` (n for k >= ranges).
+std::size_t range_begin(std::size_t n, std::size_t ranges, std::size_t k);
 
 // Whether the model's method and drag run the vectorised flight phase (phase 1) at all.
 bool has_fast_flight(const Model& model);

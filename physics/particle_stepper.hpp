@@ -83,6 +83,30 @@ void add_counts(ForceCounters& c, const F& forces, const AdaptiveStats& adaptive
     c.contacts += contact_solves;
 }
 
+// Earliest s in [0, h] at which the wall distance d0 + b s + c s^2 reaches 0, given it is
+// below 0 at s = h (h when round-off denies that). Roots by the cancellation-free form
+// q = -(b + sgn(b) sqrt(b^2 - 4 c d0)) / 2, s = q / c or d0 / q (Press et al., Numerical Recipes,
+// 3rd ed., section 5.6). A sphere already on the wall (d0 <= 0) touches it now unless it moves
+// away, and then only where it comes back.
+inline double first_contact_root(double d0, double b, double c, double h) {
+    double s = h;
+    if (!(d0 > 0.0)) {
+        if (b < 0.0 || (b == 0.0 && c <= 0.0)) return 0.0;
+        if (c < 0.0) s = -b / c;
+    } else if (c == 0.0) {
+        if (b < 0.0) s = -d0 / b;
+    } else {
+        const double disc = b * b - 4.0 * c * d0;
+        if (disc >= 0.0) {
+            const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+            const double r1 = q / c, r2 = d0 / q;
+            s = r1 > 0.0 ? r1 : INFINITY;
+            if (r2 > 0.0 && r2 < s) s = r2;
+        }
+    }
+    return s >= 0.0 && s <= h ? s : h;  // NaN (round-off at a double root) and overshoot: h
+}
+
 template <class F>
 class ParticleStepper {
 public:
@@ -106,9 +130,11 @@ public:
                 if (!adaptive_flight(p, t, remaining, wall, s_hit)) return;
             } else {
                 const FlightState end = flight(p, t, remaining);
+                Vec3 a0(0.0);
                 for (int w = 0; w < wall_count; ++w) {
                     if (c_.room->distance(w, end.x, p.radius) >= 0.0) continue;
-                    const double s = time_of_impact(p, w, t, remaining);
+                    if (wall < 0 && polynomial_position()) a0 = f_(p.y.x, p.y.v, t).a;
+                    const double s = time_of_impact(p, w, t, remaining, a0);
                     if (wall < 0 || s < s_hit) { wall = w; s_hit = s; }
                 }
                 if (wall < 0) {
@@ -181,9 +207,28 @@ private:
         return false;
     }
 
+    // Whether the method's position after a step of length s is x0 + s v0 + kappa s^2 a0, with
+    // a0 the acceleration at the step start: explicit Euler (kappa = 0), semi-implicit Euler
+    // (v0 + s a0 is the new velocity, so kappa = 1) and velocity Verlet (kappa = 1/2).
+    bool polynomial_position() const {
+        return c_.method == Method::explicit_euler || c_.method == Method::semi_implicit_euler ||
+               c_.method == Method::velocity_verlet;
+    }
+    double position_kappa() const {
+        return c_.method == Method::semi_implicit_euler ? 1.0 : c_.method == Method::velocity_verlet ? 0.5 : 0.0;
+    }
+
     // Earliest s in [0, h] at which the sphere touches `wall`, given it is beyond it at s = h,
-    // on the fixed-step method's own trajectory (the step re-run with length s).
-    double time_of_impact(ParticleStep& p, int wall, double t, double h) const {
+    // on the fixed-step method's own trajectory (the step re-run with length s): in closed form
+    // where that trajectory is a polynomial in s (a0 = acceleration at the step start), by a
+    // root search otherwise.
+    double time_of_impact(ParticleStep& p, int wall, double t, double h, const Vec3& a0) const {
+        if (polynomial_position()) {
+            const int axis = RoomBounds::axis(wall);
+            const double sign = RoomBounds::is_max(wall) ? -1.0 : 1.0;
+            return first_contact_root(c_.room->distance(wall, p.y.x, p.radius), sign * p.y.v[axis],
+                                      sign * position_kappa() * a0[axis], h);
+        }
         return find_contact([&](double s) { return c_.room->distance(wall, flight(p, t, s).x, p.radius); }, h);
     }
 

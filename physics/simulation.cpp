@@ -89,6 +89,9 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
         state_.initial_energy[i] = kinetic_energy(p.mass, p.velocity) +
                                    potential_energy(model_.world.gravity, model_.room, p.mass, p.position);
     }
+    identical_particles_ = std::all_of(particles.begin(), particles.end(), [&](const ParticleSpec& p) {
+        return p.mass == particles.front().mass && p.radius == particles.front().radius;
+    });  // drag coefficients are functions of mass and radius
     warned_.assign(particles.size(), 0);
     if (model_.drag.model != DragModel::none) {
         re_min_.assign(particles.size(), INFINITY);
@@ -171,40 +174,6 @@ void Simulation::raise(WarningKind kind, std::uint32_t particle, std::string mes
     if (warned_[particle] & bit) return;
     warned_[particle] |= bit;
     warnings_.push_back({kind, particle, time(), std::move(message)});
-}
-
-void Simulation::monitor() {
-    if (model_.drag.model == DragModel::none) return;
-    // The monitor only reads the state, and costs several times a kernel step per particle:
-    // beyond a handful of particles it samples every 8th step (warnings then carry the time of
-    // the sample that saw them).
-    if (state_.size() > 64 && steps_ % 8 != 0) return;
-    const ReRange valid = drag_validity(model_.drag.model);
-    const double limit = method_stability_limit(model_.integrator.method);
-    for (std::size_t i = 0; i < state_.size(); ++i) {
-        if (state_.frozen[i] || state_.resting[i]) continue;
-        const double u = glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
-        const double re = state_.drag_re_scale[i] * u;
-        if (u > 0.0) record_reynolds(i, re);
-        const auto id = static_cast<std::uint32_t>(i);
-        if (u > 0.0 && (re < valid.lo || re > valid.hi))
-            raise(WarningKind::drag_validity, id,
-                  fmt::format("particle {}: Re = {:.3g} at t = {:.3f} s is outside the {} drag model's "
-                              "validity range {:.3g} < Re < {:.3g}",
-                              i, re, time(), to_string(model_.drag.model), valid.lo, valid.hi));
-        if (u > 0.3 * 343.0)
-            raise(WarningKind::mach, id,
-                  fmt::format("particle {}: Mach {:.2f} at t = {:.3f} s; compressibility is not modelled "
-                              "(results unreliable above Mach 0.3)",
-                              i, u / 343.0, time()));
-        const double k = drag_stiffness(model_.drag.model, {state_.drag_k[i], state_.drag_re_scale[i]}, u);
-        max_stiffness_ = std::max(max_stiffness_, k);
-        if (k * dt() > limit)
-            raise(WarningKind::stability, id,
-                  fmt::format("particle {}: dt * k = {:.3g} exceeds the {} stability limit {:.3g} "
-                              "(drag stiffness k = {:.3g} 1/s); use dt <= {:.3g} s or the exponential method",
-                              i, k * dt(), to_string(model_.integrator.method), limit, k, 0.9 * limit / k));
-    }
 }
 
 }  // namespace pl

@@ -61,6 +61,9 @@ public:
     const ParticleState& state() const { return state_; }
     std::size_t particle_count() const { return state_.size(); }
     const WindField& wind() const { return wind_; }
+    // Whether every particle has the same mass, radius and drag coefficients (set at
+    // construction, the only place they are written): kernels then read them once.
+    bool identical_particles() const { return identical_particles_; }
 
     // Threads for the particle loop: 0 = all hardware threads (the default), 1 = single-threaded.
     // Results are bit-identical for every setting; small scenes always run on one thread.
@@ -105,6 +108,7 @@ private:
     StepKernel kernel_ = nullptr;
     KernelChoice kernel_choice_ = KernelChoice::fast;
     int threads_ = 0;
+    bool identical_particles_ = false;
     std::uint64_t steps_ = 0;
     std::vector<Event> events_;
     std::uint64_t dropped_events_ = 0;

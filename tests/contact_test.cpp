@@ -2,6 +2,7 @@
 // restitution 0 and 1, friction, corners, fast particles.
 #include "physics/contact.hpp"
 #include "physics/energy.hpp"
+#include "physics/particle_stepper.hpp"
 #include "physics/simulation.hpp"
 #include "test_scenes.hpp"
 
@@ -240,6 +241,46 @@ TEST(Contact, EdgeAndCornerHitsReflectAllComponents) {
     EXPECT_NEAR(sim.state().vy[0], -1.0, 1e-12);
     EXPECT_NEAR(sim.state().vz[0], -1.0, 1e-12);
     EXPECT_EQ(of_kind(sim.events(), EventKind::bounce).size(), 3u);
+}
+
+}  // namespace
+}  // namespace pl
+
+namespace pl {
+namespace {
+
+// The closed-form time of impact the Euler and Verlet steps use: the root of the quadratic wall
+// distance, the earliest one, from the stable formula even where the naive one cancels.
+TEST(ContactRoot, FirstRootOfTheWallDistance) {
+    // Falling from 1 m under g: d = 1 - g/2 s^2 (kappa 1/2), root sqrt(2/g).
+    EXPECT_NEAR(first_contact_root(1.0, 0.0, -0.5 * g, 10.0), std::sqrt(2.0 / g), 1e-15);
+    // Moving in at 2 m/s, no acceleration: 0.5 s.
+    EXPECT_DOUBLE_EQ(first_contact_root(1.0, -2.0, 0.0, 10.0), 0.5);
+    // Thrown up from the wall at 3 m/s: back on it at 2 * 3 / g; not at 0.
+    EXPECT_NEAR(first_contact_root(0.0, 3.0, -0.5 * g, 10.0), 6.0 / g, 1e-15);
+    // On the wall moving in: contact now.
+    EXPECT_EQ(first_contact_root(0.0, -1.0, -5.0, 1.0), 0.0);
+    // Two roots in the step (moving in fast, decelerated away from the wall): the first one.
+    EXPECT_NEAR(first_contact_root(1.0, -4.0, 2.0, 10.0), 1.0 - std::sqrt(0.5), 1e-15);
+    // Fast and close: b^2 >> 4 c d0, where -b + sqrt(b^2 - 4 c d0) would lose every digit.
+    const double s = first_contact_root(1e-9, -300.0, -4.9, 1.0);
+    EXPECT_NEAR(s, 1e-9 / 300.0, 1e-24);
+    // Round-off says the wall is not reached inside the step: the end of the step.
+    EXPECT_EQ(first_contact_root(1.0, -0.5, 0.0, 1.0), 1.0);
+    EXPECT_EQ(first_contact_root(1.0, 0.0, 1.0, 1.0), 1.0);
+}
+
+// The located impact is where the step's own trajectory meets the wall: for semi-implicit Euler
+// with one big step, the bounce time is the root of y0 + s v0 - g s^2 = r (kappa = 1, not 1/2).
+TEST(ContactRoot, SemiImplicitEulerImpactIsOnItsOwnTrajectory) {
+    const double dt = 0.5;
+    Model m = drop_model(0.5, Method::semi_implicit_euler, dt, 0.0);
+    Simulation sim(m, {ball_at_height(1.0)});
+    sim.step();
+    const auto bounces = of_kind(sim.events(), EventKind::bounce);
+    ASSERT_EQ(bounces.size(), 1u);
+    const double drop = 1.0;  // height of the sphere's bottom above the floor
+    EXPECT_NEAR(bounces[0].t, std::sqrt(drop / g), 1e-12);
 }
 
 }  // namespace

@@ -20,7 +20,9 @@ struct Scenario {
 };
 
 // A room full of particles: some thrown hard at the walls, some dropped to come to rest.
-Scenario random_scenario(std::uint64_t seed, Method method, DragModel drag, WindKind wind, std::size_t n) {
+// identical: every particle has the same mass and radius (the kernel then reads them once).
+Scenario random_scenario(std::uint64_t seed, Method method, DragModel drag, WindKind wind, std::size_t n,
+                         bool identical = false) {
     SplitMix64 rng(seed);
     Scenario s;
     Model& m = s.model;
@@ -38,10 +40,12 @@ Scenario random_scenario(std::uint64_t seed, Method method, DragModel drag, Wind
     m.world.wind.velocity = {rng.uniform(-4, 4), rng.uniform(-1, 1), rng.uniform(-4, 4)};
     m.world.wind.vortex_center = m.room.center;
     const Vec3 lo = m.room.min_corner(), hi = m.room.max_corner();
+    const double radius = identical ? rng.uniform(0.01, 0.12) : 0.0;
+    const double mass = identical ? rng.uniform(0.005, 0.5) : 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         ParticleSpec p;
-        p.radius = rng.uniform(0.01, 0.12);
-        p.mass = rng.uniform(0.005, 0.5);
+        p.radius = identical ? radius : rng.uniform(0.01, 0.12);
+        p.mass = identical ? mass : rng.uniform(0.005, 0.5);
         for (int a = 0; a < 3; ++a) p.position[a] = rng.uniform(lo[a] + p.radius, hi[a] - p.radius);
         const double speed = i % 3 == 0 ? 0.0 : rng.uniform(0.0, 12.0);
         p.velocity = speed * Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
@@ -88,6 +92,26 @@ TEST(FastKernel, BitIdenticalToGenericForEveryMethodAndDragModel) {
         }
     }
     EXPECT_GT(rests, 200u);
+}
+
+TEST(FastKernel, BitIdenticalForIdenticalParticles) {
+    std::uint64_t seed = 150;
+    for (Method method : all_methods) {
+        for (DragModel drag : all_drags) {
+            SCOPED_TRACE(std::string(to_string(method)) + " / " + to_string(drag));
+            Pair p(random_scenario(++seed, method, drag, WindKind::none, 150, true));
+            ASSERT_TRUE(p.fast.identical_particles());
+            p.step_n(400);
+            test::expect_identical(p.fast, p.generic);
+            EXPECT_GT(count_kind(p.generic.events(), EventKind::bounce), 50u);
+        }
+    }
+    // Wind, where the wind is looked up before the vector loop.
+    Pair wind(random_scenario(++seed, Method::semi_implicit_euler, DragModel::quadratic, WindKind::shear, 150, true));
+    wind.step_n(300);
+    test::expect_identical(wind.fast, wind.generic);
+    Pair mixed(random_scenario(++seed, Method::semi_implicit_euler, DragModel::quadratic, WindKind::none, 10));
+    EXPECT_FALSE(mixed.fast.identical_particles());
 }
 
 TEST(FastKernel, BitIdenticalUnderEveryWindKind) {

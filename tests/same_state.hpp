@@ -62,6 +62,12 @@ inline void expect_identical(const Simulation& fast, const Simulation& generic) 
         EXPECT_EQ(fast.warnings()[i].particle, generic.warnings()[i].particle);
         EXPECT_EQ(fast.warnings()[i].message, generic.warnings()[i].message);
     }
+    // The monitor's statistics (its scan is split over the threads like the kernel).
+    EXPECT_EQ(fast.max_drag_stiffness(), generic.max_drag_stiffness());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(fast.min_reynolds(i), generic.min_reynolds(i)) << "particle " << i;
+        EXPECT_EQ(fast.max_reynolds(i), generic.max_reynolds(i)) << "particle " << i;
+    }
     const ForceCounters &c = fast.counters(), &d = generic.counters();
     EXPECT_EQ(c.gravity, d.gravity);
     EXPECT_EQ(c.drag, d.drag);

@@ -54,6 +54,10 @@ void expect_same_for_1_2_3_threads(const Crowd& c, int steps) {
         runs.back().step_n(static_cast<std::uint64_t>(steps));
     }
     EXPECT_GT(runs[0].events().size(), 100u);
+    // Warnings are raised in particle order after the monitor's threaded scan.
+    if (c.model.drag.model != DragModel::none) {
+        EXPECT_GT(runs[0].warnings().size(), 0u);
+    }
     for (std::size_t k = 1; k < runs.size(); ++k) {
         SCOPED_TRACE("threads " + std::to_string(k + 1));
         test::expect_identical(runs[k], runs[0]);

@@ -1,0 +1,169 @@
+// Simulation::monitor: the checks after a step (drag validity range, Mach number, stability of
+// the explicit methods against the drag stiffness) and the observed Reynolds range per particle.
+// Two passes: a branch-free scan over the state arrays (vectorised, split over the threads like
+// the kernel) finds the particles that need a warning; the warnings are then raised in particle
+// order, so the result does not depend on the thread count.
+#include "simulation.hpp"
+
+#include "drag.hpp"
+#include "fast_kernel.hpp"
+#include "thread_pool.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace pl {
+
+namespace {
+
+constexpr double mach_warning_speed = 0.3 * 343.0;  // m/s
+
+struct MonitorLimits {
+    ReRange valid;
+    double dt, stability_limit;  // warn when dt * stiffness > stability_limit
+};
+
+// What one range of particles produced: the largest stiffness and, in order, the particles
+// that crossed a limit they have not been warned about yet.
+struct MonitorOutput {
+    double max_stiffness = 0.0;
+    std::vector<std::uint32_t> suspects;
+};
+
+// Drag stiffness d|a_drag|/du, inlined for the models whose formula vectorises.
+template <DragModel Drag>
+double stiffness(double k, double re_scale, double u) {
+    if constexpr (Drag == DragModel::linear) return k;
+    else if constexpr (Drag == DragModel::quadratic) return 2.0 * k * u;
+    else return drag_stiffness(Drag, {k, re_scale}, u);
+}
+
+template <DragModel Drag, bool HasWind>
+void scan(const ParticleState& s, const WindField& wind, double t, const MonitorLimits& lim,
+          const std::uint8_t* warned, double* re_min, double* re_max, std::size_t begin, std::size_t end,
+          MonitorOutput& out) {
+    constexpr std::size_t chunk = 256;
+    // 64-bit lanes (a byte-sized value would make GCC take 64 particles per vector iteration).
+    std::int64_t skip[chunk], unwarned[chunk], suspect[chunk];
+    double wx[chunk] = {}, wy[chunk] = {}, wz[chunk] = {};
+    constexpr auto validity_bit = 1u << static_cast<unsigned>(WarningKind::drag_validity);
+    constexpr auto mach_bit = 1u << static_cast<unsigned>(WarningKind::mach);
+    constexpr auto stability_bit = 1u << static_cast<unsigned>(WarningKind::stability);
+    for (std::size_t c = begin; c < end; c += chunk) {
+        const std::size_t n = std::min(end, c + chunk) - c;
+        for (std::size_t j = 0; j < n; ++j) {
+            skip[j] = (s.frozen[c + j] | s.resting[c + j]) != 0;
+            // Kinds of warning the particle can still get (none while it rests or is frozen).
+            unwarned[j] = skip[j] ? 0 : ~warned[c + j] & 0xff;
+        }
+        if constexpr (HasWind) {
+            for (std::size_t j = 0; j < n; ++j) {
+                const Vec3 w = wind.at(s.position(c + j), t);
+                wx[j] = w.x;
+                wy[j] = w.y;
+                wz[j] = w.z;
+            }
+        }
+        const double* const vx = s.vx.data() + c;
+        const double* const vy = s.vy.data() + c;
+        const double* const vz = s.vz.data() + c;
+        const double* const drag_k = s.drag_k.data() + c;
+        const double* const re_scale = s.drag_re_scale.data() + c;
+        double* const lo = re_min + c;
+        double* const hi = re_max + c;
+        // The largest stiffness as the largest bit pattern: for doubles >= 0 the order is the
+        // same, and an integer max reduction vectorises where a floating-point one does not.
+        std::int64_t max_k = std::bit_cast<std::int64_t>(out.max_stiffness);
+        // The Reynolds ranges are the only arrays written, and no other pointer reaches them.
+#pragma GCC ivdep
+        for (std::size_t j = 0; j < n; ++j) {
+            const double ux = vx[j] - wx[j], uy = vy[j] - wy[j], uz = vz[j] - wz[j];
+            const double u = std::sqrt(ux * ux + uy * uy + uz * uz);
+            const double re = re_scale[j] * u;
+            const bool moving = (skip[j] == 0) & (u > 0.0);
+            const double seen_lo = lo[j], seen_hi = hi[j];
+            lo[j] = moving & (re < seen_lo) ? re : seen_lo;
+            hi[j] = moving & (re > seen_hi) ? re : seen_hi;
+            const double k = stiffness<Drag>(drag_k[j], re_scale[j], u);
+            const std::int64_t k_bits = skip[j] == 0 ? std::bit_cast<std::int64_t>(k) : 0;
+            max_k = k_bits > max_k ? k_bits : max_k;
+            // Only what the particle has not been warned about yet.
+            const std::int64_t invalid = (u > 0.0) & ((re < lim.valid.lo) | (re > lim.valid.hi)) ? validity_bit : 0;
+            const std::int64_t fast = u > mach_warning_speed ? mach_bit : 0;
+            const std::int64_t unstable = k * lim.dt > lim.stability_limit ? stability_bit : 0;
+            suspect[j] = (invalid | fast | unstable) & unwarned[j];
+        }
+        out.max_stiffness = std::bit_cast<double>(max_k);
+        for (std::size_t j = 0; j < n; ++j)
+            if (suspect[j]) out.suspects.push_back(static_cast<std::uint32_t>(c + j));
+    }
+}
+
+using ScanFn = void (*)(const ParticleState&, const WindField&, double, const MonitorLimits&, const std::uint8_t*,
+                        double*, double*, std::size_t, std::size_t, MonitorOutput&);
+
+template <DragModel Drag>
+ScanFn pick_scan(bool wind) {
+    return wind ? &scan<Drag, true> : &scan<Drag, false>;
+}
+
+ScanFn pick_scan(DragModel drag, bool wind) {
+    switch (drag) {
+        case DragModel::linear: return pick_scan<DragModel::linear>(wind);
+        case DragModel::quadratic: return pick_scan<DragModel::quadratic>(wind);
+        case DragModel::sphere_re: return pick_scan<DragModel::sphere_re>(wind);
+        case DragModel::none: break;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+void Simulation::monitor() {
+    if (model_.drag.model == DragModel::none) return;
+    // The monitor only reads the state; beyond a handful of particles it samples every 8th
+    // step (warnings then carry the time of the sample that saw them).
+    if (state_.size() > 64 && steps_ % 8 != 0) return;
+    const ReRange valid = drag_validity(model_.drag.model);
+    const double limit = method_stability_limit(model_.integrator.method);
+    const MonitorLimits lim{valid, dt(), limit};
+    const ScanFn scan_range = pick_scan(model_.drag.model, wind_.kind() != WindKind::none);
+    const std::size_t n = state_.size();
+    const std::size_t ranges = particle_ranges(n, threads_);
+    std::vector<MonitorOutput> outs(ranges);
+    auto task = [&](std::size_t k) {
+        scan_range(state_, wind_, time(), lim, warned_.data(), re_min_.data(), re_max_.data(),
+                   range_begin(n, ranges, k), range_begin(n, ranges, k + 1), outs[k]);
+    };
+    if (ranges == 1) task(0);
+    else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(threads_)), task);
+
+    for (const MonitorOutput& out : outs) {
+        max_stiffness_ = std::max(max_stiffness_, out.max_stiffness);
+        for (const std::uint32_t i : out.suspects) {
+            const double u = glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
+            const double re = state_.drag_re_scale[i] * u;
+            if (u > 0.0 && (re < valid.lo || re > valid.hi))
+                raise(WarningKind::drag_validity, i,
+                      fmt::format("particle {}: Re = {:.3g} at t = {:.3f} s is outside the {} drag model's "
+                                  "validity range {:.3g} < Re < {:.3g}",
+                                  i, re, time(), to_string(model_.drag.model), valid.lo, valid.hi));
+            if (u > mach_warning_speed)
+                raise(WarningKind::mach, i,
+                      fmt::format("particle {}: Mach {:.2f} at t = {:.3f} s; compressibility is not modelled "
+                                  "(results unreliable above Mach 0.3)",
+                                  i, u / 343.0, time()));
+            const double k = drag_stiffness(model_.drag.model, {state_.drag_k[i], state_.drag_re_scale[i]}, u);
+            if (k * dt() > limit)
+                raise(WarningKind::stability, i,
+                      fmt::format("particle {}: dt * k = {:.3g} exceeds the {} stability limit {:.3g} "
+                                  "(drag stiffness k = {:.3g} 1/s); use dt <= {:.3g} s or the exponential method",
+                                  i, k * dt(), to_string(model_.integrator.method), limit, k, 0.9 * limit / k));
+        }
+    }
+}
+
+}  // namespace pl
