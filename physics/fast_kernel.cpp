@@ -17,6 +17,17 @@ namespace {
 // The fixed-step methods phase 1 runs; `none` sends every particle to phase 2.
 enum class Flight { none, explicit_euler, semi_implicit_euler, velocity_verlet, rk4 };
 
+constexpr Method method_of(Flight m) {
+    switch (m) {
+        case Flight::explicit_euler: return Method::explicit_euler;
+        case Flight::semi_implicit_euler: return Method::semi_implicit_euler;
+        case Flight::velocity_verlet: return Method::velocity_verlet;
+        case Flight::rk4: return Method::rk4;
+        case Flight::none: break;
+    }
+    return Method::dopri5;  // stands for "no fixed-step flight phase"
+}
+
 template <Flight M, class F>
 FlightState fixed_step(const FlightState& y, double t, double h, const F& f) {
     if constexpr (M == Flight::explicit_euler) return explicit_euler_step(y, t, h, f);
@@ -84,6 +95,15 @@ void set_forces(KnownWindForces<Drag>& f, double gx, double gy, double gz, const
     f.w.x = wx;
     f.w.y = wy;
     f.w.z = wz;
+}
+
+// A cache-line prefetch the optimiser keeps (GCC 12 drops __builtin_prefetch in this kernel).
+inline void prefetch(const double* p) {
+#if defined(__x86_64__)
+    asm volatile("prefetcht0 %0" : : "m"(*p));
+#else
+    __builtin_prefetch(p);
+#endif
 }
 
 // Lane masks of phase 1 are 64-bit: a byte-sized value in the vectorised loop would make GCC
@@ -196,33 +216,24 @@ public:
             for (std::size_t i = begin; i < end; ++i) step_generic(i);
         } else {
             // Phase 2 of a chunk runs after phase 1 of the next one, with the memory the generic
-            // path reads but phase 1 does not (ledger entries, drag_re_scale) prefetched in
-            // between: in a large scene those are cache misses, now overlapped with useful work.
-            // Particles of different chunks are independent, so the results are the same.
+            // path reads but phase 1 does not (ledger entries, per-particle constants) prefetched
+            // in between: in a large scene those are cache misses, now overlapped with useful
+            // work. Particles of different chunks are independent, so the results are the same.
             LaneMask blocked[fast_chunk], flagged[2][fast_chunk];
             std::size_t pending_begin = 0, pending_end = 0;  // a chunk waiting for phase 2
             int current = 0;
             for (std::size_t c = begin; c < end; c += fast_chunk) {
                 const std::size_t c_end = std::min(end, c + fast_chunk);
                 blocked_lanes(s_, c, c_end, blocked);
+                LaneMask* const flags = flagged[current];
                 const std::size_t finished =
-                    identical_ ? flight_chunk<M, Drag, HasWind, true>(s_, c, c_end, f_, room_, t0_, h_, blocked,
-                                                                     flagged[current])
-                               : flight_chunk<M, Drag, HasWind, false>(s_, c, c_end, f_, room_, t0_, h_, blocked,
-                                                                      flagged[current]);
+                    identical_ ? flight_chunk<M, Drag, HasWind, true>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags)
+                               : flight_chunk<M, Drag, HasWind, false>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags);
                 fast += finished;
                 if (pending_end > pending_begin) contact_phase(pending_begin, pending_end, flagged[1 - current]);
                 pending_begin = pending_end = c_end;
                 if (finished < c_end - c) {
-                    // Written out here: GCC takes a helper that only prefetches for a const
-                    // function and deletes the call.
-                    for (std::size_t i = c; i < c_end; ++i) {
-                        if (!flagged[current][i - c]) continue;
-                        __builtin_prefetch(&s_.drag_re_scale[i]);
-                        __builtin_prefetch(&s_.dissipated_bounce[i], 1);
-                        __builtin_prefetch(&s_.dissipated_friction[i], 1);
-                        __builtin_prefetch(&s_.mass[i]);
-                    }
+                    prefetch_generic(c, c_end, flags);
                     pending_begin = c;
                     current = 1 - current;
                 }
@@ -260,9 +271,96 @@ private:
             if (flagged[k]) f(c + k);
     }
 
+    // Asks for the memory step_generic reads and phase 1 did not, for the flagged particles of
+    // a chunk.
+    void prefetch_generic(std::size_t c, std::size_t c_end, const LaneMask* flagged) {
+        for (std::size_t k = 0; c + k < c_end; k += 8) {
+            LaneMask any = 0;
+            for (std::size_t j = k; j < k + 8 && c + j < c_end; ++j) any |= flagged[j];
+            if (!any) continue;
+            for (std::size_t j = k; j < k + 8 && c + j < c_end; ++j) {
+                if (!flagged[j]) continue;
+                const std::size_t i = c + j;
+                prefetch(&s_.drag_k[i]);
+                prefetch(&s_.drag_re_scale[i]);
+                prefetch(&s_.mass[i]);
+                prefetch(&s_.radius[i]);
+                prefetch(&s_.dissipated_bounce[i]);
+                prefetch(&s_.dissipated_friction[i]);
+            }
+        }
+    }
+
     // Phase 2 for one chunk.
     void contact_phase(std::size_t c, std::size_t c_end, const LaneMask* flagged) {
-        for_each_flagged(c, c_end, flagged, [this](std::size_t i) { step_generic(i); });
+        for_each_flagged(c, c_end, flagged, [this](std::size_t i) {
+            if (!single_bounce(i)) step_generic(i);
+        });
+    }
+
+    // The common contact, straight through: a free particle whose step crosses exactly one wall,
+    // rebounds faster than rest_speed and finishes the step without reaching another wall. These
+    // are ParticleStepper::advance's operations for that case, in its order, without its loops
+    // and searches (fast_kernel_test checks the bits). Any other case returns false with nothing
+    // written and the force counters restored, and the generic path takes the particle.
+    bool single_bounce(std::size_t i) {
+        constexpr Method method = method_of(M);
+        if constexpr (!has_polynomial_position(method)) {
+            return false;
+        } else {
+            if (s_.resting[i] | s_.frozen[i]) return false;
+            const F saved = f_;
+            f_.drag = {s_.drag_k[i], s_.drag_re_scale[i]};
+            const double r = s_.radius[i];
+            FlightState y0;
+            y0.x = s_.position(i);
+            y0.v = s_.velocity(i);
+            const FlightState end = fixed_step<M>(y0, t0_, h_, f_);
+            int crossed = 0, wall = 0;
+            for (int w = 0; w < wall_count; ++w) {
+                const bool c = !(room_.distance(w, end.x, r) >= 0.0);
+                crossed += c;
+                wall = c ? w : wall;
+            }
+            if (crossed != 1) return restore(saved);
+            const Vec3 a0 = f_(y0.x, y0.v, t0_).a;
+            const double s_hit = polynomial_time_of_impact(room_, wall, y0, r, position_kappa(method), a0, h_);
+            FlightState y = s_hit > 0.0 ? fixed_step<M>(y0, t0_, s_hit, f_) : y0;
+            y.x[RoomBounds::axis(wall)] = room_.contact_plane(wall, r);
+            y.x = room_.clamp_inside(y.x, r);
+            const double t = t0_ + s_hit, remaining = h_ - s_hit;
+            const double speed_in = glm::length(y.v);
+            const ImpactResult hit = impact(y.v, RoomBounds::inward_normal(wall), m_.contact);
+            if (hit.normal_speed_out < m_.contact.rest_speed) return restore(saved);
+            y.v = hit.v_out;
+            const double speed_out = glm::length(y.v);
+            if (remaining > 0.0) {
+                const FlightState y_end = fixed_step<M>(y, t, remaining, f_);
+                for (int w = 0; w < wall_count; ++w)
+                    if (!(room_.distance(w, y_end.x, r) >= 0.0)) return restore(saved);
+                y = y_end;
+            }
+            if (!is_finite(y)) return restore(saved);
+            ++contact_solves_;
+            if (hit.normal_speed_in > 0.0)
+                out_.events->push_back({t, static_cast<std::uint32_t>(i), static_cast<std::int8_t>(wall),
+                                        EventKind::bounce, speed_in, speed_out});
+            ParticleStep p;
+            p.y = y;
+            p.resting = 0;
+            p.bounce_loss = 0.0 + hit.bounce_loss_per_kg;
+            p.friction_loss = 0.0 + hit.friction_loss_per_kg;
+            store_step<Drag, HasWind>(s_, i, p, nullptr);
+            return true;
+        }
+    }
+
+    // Undoes single_bounce's force evaluations (the generic path counts its own).
+    bool restore(const F& saved) {
+        f_.gravity_evals = saved.gravity_evals;
+        f_.drag_evals = saved.drag_evals;
+        f_.wind_evals = saved.wind_evals;
+        return false;
     }
 
 

@@ -25,7 +25,7 @@ namespace pl {
 constexpr std::size_t fast_chunk = 256;
 // Fewer particles than this per range are not worth a hand-over to another thread.
 constexpr std::size_t min_particles_per_range = 1024;
-constexpr std::size_t ranges_per_thread = 4;
+constexpr std::size_t ranges_per_thread = 2;
 
 // The kernel for the model's force terms and method (never null).
 StepKernel pick_fast_kernel(const Model& model);

@@ -107,6 +107,24 @@ inline double first_contact_root(double d0, double b, double c, double h) {
     return s >= 0.0 && s <= h ? s : h;  // NaN (round-off at a double root) and overshoot: h
 }
 
+// Whether the method's position after a step of length s is x0 + s v0 + kappa s^2 a0, with a0
+// the acceleration at the step start: explicit Euler (kappa = 0), semi-implicit Euler (v0 + s a0
+// is the new velocity, so kappa = 1) and velocity Verlet (kappa = 1/2).
+constexpr bool has_polynomial_position(Method m) {
+    return m == Method::explicit_euler || m == Method::semi_implicit_euler || m == Method::velocity_verlet;
+}
+constexpr double position_kappa(Method m) {
+    return m == Method::semi_implicit_euler ? 1.0 : m == Method::velocity_verlet ? 0.5 : 0.0;
+}
+
+// Time of impact on `wall` of a step starting at y whose position is that polynomial.
+inline double polynomial_time_of_impact(const RoomBounds& room, int wall, const FlightState& y, double radius,
+                                        double kappa, const Vec3& a0, double h) {
+    const int axis = RoomBounds::axis(wall);
+    const double sign = RoomBounds::is_max(wall) ? -1.0 : 1.0;
+    return first_contact_root(room.distance(wall, y.x, radius), sign * y.v[axis], sign * kappa * a0[axis], h);
+}
+
 template <class F>
 class ParticleStepper {
 public:
@@ -207,28 +225,15 @@ private:
         return false;
     }
 
-    // Whether the method's position after a step of length s is x0 + s v0 + kappa s^2 a0, with
-    // a0 the acceleration at the step start: explicit Euler (kappa = 0), semi-implicit Euler
-    // (v0 + s a0 is the new velocity, so kappa = 1) and velocity Verlet (kappa = 1/2).
-    bool polynomial_position() const {
-        return c_.method == Method::explicit_euler || c_.method == Method::semi_implicit_euler ||
-               c_.method == Method::velocity_verlet;
-    }
-    double position_kappa() const {
-        return c_.method == Method::semi_implicit_euler ? 1.0 : c_.method == Method::velocity_verlet ? 0.5 : 0.0;
-    }
+    bool polynomial_position() const { return has_polynomial_position(c_.method); }
 
     // Earliest s in [0, h] at which the sphere touches `wall`, given it is beyond it at s = h,
     // on the fixed-step method's own trajectory (the step re-run with length s): in closed form
     // where that trajectory is a polynomial in s (a0 = acceleration at the step start), by a
     // root search otherwise.
     double time_of_impact(ParticleStep& p, int wall, double t, double h, const Vec3& a0) const {
-        if (polynomial_position()) {
-            const int axis = RoomBounds::axis(wall);
-            const double sign = RoomBounds::is_max(wall) ? -1.0 : 1.0;
-            return first_contact_root(c_.room->distance(wall, p.y.x, p.radius), sign * p.y.v[axis],
-                                      sign * position_kappa() * a0[axis], h);
-        }
+        if (polynomial_position())
+            return polynomial_time_of_impact(*c_.room, wall, p.y, p.radius, position_kappa(c_.method), a0, h);
         return find_contact([&](double s) { return c_.room->distance(wall, flight(p, t, s).x, p.radius); }, h);
     }
 

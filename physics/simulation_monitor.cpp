@@ -125,8 +125,10 @@ ScanFn pick_scan(DragModel drag, bool wind) {
 void Simulation::monitor() {
     if (model_.drag.model == DragModel::none) return;
     // The monitor only reads the state; beyond a handful of particles it samples every 8th
-    // step (warnings then carry the time of the sample that saw them).
-    if (state_.size() > 64 && steps_ % 8 != 0) return;
+    // step, in large scenes every 32nd, so that it costs a few percent of the steps it watches
+    // (warnings then carry the time of the sample that saw them).
+    const std::uint64_t period = state_.size() <= 64 ? 1 : state_.size() <= 1024 ? 8 : 32;
+    if (steps_ % period != 0) return;
     const ReRange valid = drag_validity(model_.drag.model);
     const double limit = method_stability_limit(model_.integrator.method);
     const MonitorLimits lim{valid, dt(), limit};
