@@ -35,6 +35,7 @@ std::size_t warning_count(const LabSession& s) {
 void draw_control_panel(LabSession& s) {
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     const std::string preset_header = std::string("Preset") + (s.dirty ? " *" : "") + "###preset";
+    if (panels_of(s).focus_open_path) ImGui::SetNextItemOpen(true);  // Ctrl+O needs its field on screen
     if (ImGui::CollapsingHeader(preset_header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) draw_preset_section(s);
     if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) draw_time_section(s);
     if (ImGui::CollapsingHeader("Launch", ImGuiTreeNodeFlags_DefaultOpen)) draw_launch_section(s);
@@ -142,7 +143,9 @@ void error_modal(LabSession& s) {
     ImGui::TextUnformatted(s.error_popup.c_str());
     ImGui::PopTextWrapPos();
     ImGui::Separator();
-    if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
+    // Enter counts from the dialog's second frame: the Enter that loaded a bad file from the
+    // path field must not dismiss its own error unread.
+    if (ImGui::Button("OK", ImVec2(120, 0)) || (open && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)))) {
         s.error_popup.clear();
         ImGui::CloseCurrentPopup();
     }
@@ -205,15 +208,19 @@ void help_overlay(LabSession& s) {
         {"W A S D", "move the camera forward / left / back / right"},
         {"Q E", "move the camera down / up"},
         {"left drag", "orbit the camera around the room"},
-        {"right or middle drag", "pan"},
+        {"right or middle drag", "pan (or Shift + left drag)"},
         {"mouse wheel", "zoom the 3D view; over a plot: zoom time"},
         {"click a particle", "select it for the inspector and the plots"},
+        {"Ctrl + left drag", "aim a launch from a particle (elsewhere: the selected one) in the plane facing\n"
+                             "you; the arrow is its straight path in the time shown. Release launches,\n"
+                             "Esc or right-click cancels"},
         {"1 2 3 (shift: other side)", "look along x / y / z"},
         {"0", "reset the view"},
         {"F", "focus the selected particle"},
         {"F1 or H", "this help"},
-        {"Esc", "close dialogs"},
+        {"Esc", "close dialogs, cancel an aim"},
         {"Ctrl+S", "save the preset over its file (previous kept as .bak)"},
+        {"Ctrl+O", "type a preset's path, Enter opens it"},
         {"Ctrl+Q", "quit (asks if there are unsaved changes)"},
         {"plots: drag", "scroll back in time (stops following)"},
         {"plots: double-click", "follow the latest samples again"},

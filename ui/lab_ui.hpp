@@ -21,5 +21,8 @@ void draw_popups(LabSession&);
 // Saves the scene over the preset it came from (atomic, previous file kept as .bak); on failure
 // the error popup says why and nothing is lost. Ctrl+S.
 bool save_in_place(LabSession&);          // error modal, help overlay, unsaved-changes prompt
+// Ctrl+O: opens the Preset section and puts the keyboard in its "open" path field (type a
+// path, Enter loads it; a file that does not load shows the error and keeps the scene).
+void focus_open_path(LabSession&);
 
 }  // namespace pl::ui

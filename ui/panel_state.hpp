@@ -61,6 +61,7 @@ struct PanelState {
     int preset_choice = -1;
     std::string save_as_name;
     std::string open_path;
+    bool focus_open_path = false;      // Ctrl+O: the next frame puts the keyboard in the open-path field
     double launch_speed = 0.0, launch_elevation_deg = 0.0, launch_azimuth_deg = 0.0;
     bool launch_from_velocity = true;  // derive the three from session.launch_velocity once
     std::unordered_map<ImGuiID, std::string> text_buffers;  // text fields (name, labels) being typed

@@ -72,6 +72,8 @@ bool save_scene_to(LabSession& s, const std::filesystem::path& file) {
     return true;
 }
 
+void focus_open_path(LabSession& s) { panels_of(s).focus_open_path = true; }
+
 bool save_in_place(LabSession& s) {
     if (s.preset_path.empty()) {
         s.status_message = "Not saved: this scene has no file yet; use Save as";
@@ -117,7 +119,10 @@ void draw_preset_section(LabSession& s) {
     if (ImGui::Button("Save")) save_scene_to(s, s.preset_path);
     ImGui::SameLine();
     if (ImGui::Button("Revert")) {
-        if (s.load(s.preset_path)) s.status_message = "Reverted to " + s.preset_path.filename().string();
+        if (s.load(s.preset_path)) {
+            s.status_message = "Reverted to " + s.preset_path.filename().string();
+            rescan(s, p);
+        }
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
@@ -144,9 +149,17 @@ void draw_preset_section(LabSession& s) {
     ImGui::TextDisabled("saves to %s", user_preset_dir().string().c_str());
 
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - ImGui::GetStyle().ItemSpacing.x - ImGui::GetStyle().FramePadding.x * 2);
-    const bool enter = ImGui::InputTextWithHint("##open", "path/to/preset.json", &p.open_path, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (p.focus_open_path) {
+        ImGui::SetWindowFocus();
+        ImGui::SetKeyboardFocusHere();
+        p.focus_open_path = false;
+    }
+    const bool enter = ImGui::InputTextWithHint("##open", "path/to/preset.json", &p.open_path,
+                                               ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+O: type a preset's path, Enter opens it");
     ImGui::SameLine();
-    if ((ImGui::Button("Open") || enter) && !p.open_path.empty()) s.load(p.open_path);
+    // Rescanned after a load so the list marks the preset now open (and shows a new file).
+    if ((ImGui::Button("Open") || enter) && !p.open_path.empty() && s.load(p.open_path)) rescan(s, p);
 }
 
 }  // namespace pl::ui

@@ -159,7 +159,7 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         // Quitting still draws this one frame when a screenshot of the last frame is wanted.
         const bool quitting = quit_signalled() || session.requests.quit;
         if (quitting && !options.screenshot) break;
-        if (take_dump_request()) dump_state(options, session, frames, {view.camera, shown_panes});
+        if (take_dump_request()) dump_state(options, session, frames, {view.camera, shown_panes, drag.aim});
         if (glfwWindowShouldClose(window.handle())) {
             glfwSetWindowShouldClose(window.handle(), GLFW_FALSE);
             if (session.dirty) session.confirm_quit = true;
@@ -172,7 +172,9 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
 
         imgui.begin_frame();
         const ImGuiIO& io = ImGui::GetIO();
-        apply_view_command(apply_shortcuts(input.keys, io.WantTextInput, io.WantCaptureKeyboard, session), view, session);
+        const ViewCommand key_command = apply_shortcuts(input.keys, io.WantTextInput, io.WantCaptureKeyboard, session);
+        if (key_command.cancel_gesture) cancel_launch_aim(drag.aim);
+        apply_view_command(key_command, view, session);
         input.keys.clear();
         handle_view_keys(window.handle(), input, view.camera, static_cast<float>(real_dt));
 
@@ -190,6 +192,7 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
             view_panes(layout.view, session.split_view, session.experiment ? session.experiment->variant_count() : 1);
         const std::optional<HoveredParticle> hovered = handle_view_mouse(drag, view.camera, panes, session);
         draw_view_overlay(session, panes, view.camera, hovered);
+        draw_launch_aim(drag.aim, session, panes, view.camera);
         if (hovered) show_particle_tooltip(session, hovered->particle);
         ui::draw_popups(session);
 
@@ -225,7 +228,7 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         }
     }
     if (view.file) save_camera(*view.file, view.camera, view.room);
-    dump_state(options, session, frames, {view.camera, shown_panes});
+    dump_state(options, session, frames, {view.camera, shown_panes, drag.aim});
     return 0;
 }
 

@@ -28,6 +28,7 @@ ViewCommand apply_shortcuts(const std::vector<KeyPress>& keys, bool text_input_a
         if (text_input_active) continue;  // typing into a field: every key belongs to it
         if (k.key == GLFW_KEY_ESCAPE) {
             close_popups(s);
+            view.cancel_gesture = true;
             continue;
         }
         if ((k.mods & GLFW_MOD_CONTROL) && k.key == GLFW_KEY_Q) {
@@ -36,6 +37,10 @@ ViewCommand apply_shortcuts(const std::vector<KeyPress>& keys, bool text_input_a
         }
         if ((k.mods & GLFW_MOD_CONTROL) && k.key == GLFW_KEY_S) {
             ui::save_in_place(s);
+            continue;
+        }
+        if ((k.mods & GLFW_MOD_CONTROL) && k.key == GLFW_KEY_O) {
+            ui::focus_open_path(s);
             continue;
         }
         if (keyboard_captured || (k.mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER))) continue;

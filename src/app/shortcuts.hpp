@@ -1,6 +1,7 @@
 // The lab's keys (when no text field has the keyboard): space play/pause, R reset, N single
-// step, L launch again, F1/H help, Esc closes popups, Ctrl+Q quit; 1/2/3 views along x/y/z
-// (Shift: from the other side), 0 reset view, F focus the selected particle.
+// step, L launch again, F1/H help, Esc closes popups and cancels a launch aim, Ctrl+Q quit,
+// Ctrl+S save, Ctrl+O type a preset path to open; 1/2/3 views along x/y/z (Shift: from the other
+// side), 0 reset view, F focus the selected particle.
 #pragma once
 
 #include "app/input_events.hpp"
@@ -15,6 +16,7 @@ struct ViewCommand {
     bool from_negative = false;
     bool reset = false;
     bool focus_selected = false;
+    bool cancel_gesture = false;  // Esc: drop a launch aim in progress
 };
 
 // Applies session-level keys to `session`; returns the camera commands.

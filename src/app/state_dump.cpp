@@ -2,6 +2,7 @@
 
 #include "app/picking.hpp"
 
+#include <imgui.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -36,6 +37,36 @@ nlohmann::json variant_json(const Simulation& sim, std::size_t variant, const Vi
     return {{"label", sim.model().label}, {"t", sim.time()}, {"steps", sim.step_count()}, {"particles", particles}};
 }
 
+// The aim in progress: its velocity and, for checking the mapping, where the particle and the
+// arrow's tip appear on screen (the tip should sit under the cursor).
+nlohmann::json aim_json(const ui::LabSession& s, const ViewSnapshot& view) {
+    const LaunchAim& aim = view.aim;
+    if (!aim.active || !s.experiment || aim.variant >= s.experiment->variant_count() || aim.pane >= view.panes.size())
+        return nullptr;
+    const Simulation& run = s.experiment->run(aim.variant);
+    if (aim.particle >= run.particle_count()) return nullptr;
+    const Rect& r = view.panes[aim.pane].rect;
+    const CameraMatrices cam = camera_matrices(view.camera, r.w / std::max(r.h, 1.0f));
+    const double arrow_time_s = aim_arrow_time_s(run.model().room);
+    const Vec3 anchor = run.state().position(aim.particle);
+    auto on_screen = [&](const Vec3& x) -> nlohmann::json {
+        if (auto p = project(cam, r, glm::vec3(x))) return nlohmann::json::array({p->x, p->y});
+        return nullptr;
+    };
+    const LaunchPolar p = launch_polar(aim.velocity);
+    return {{"variant", aim.variant},
+            {"particle", aim.particle},
+            {"velocity", vec3(aim.velocity)},
+            {"speed", p.speed_mps},
+            {"elevation_deg", p.elevation_deg},
+            {"azimuth_deg", p.azimuth_deg},
+            {"clamped", aim.clamped},
+            {"arrow_time_s", arrow_time_s},
+            {"cursor", {aim.cursor_x, aim.cursor_y}},
+            {"anchor_screen", on_screen(anchor)},
+            {"tip_screen", on_screen(anchor + aim.velocity * arrow_time_s)}};
+}
+
 }  // namespace
 
 std::string write_state_dump(const std::filesystem::path& file, const ui::LabSession& s, long frames,
@@ -51,6 +82,10 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     j["launch_velocity"] = vec3(s.launch_velocity);
     j["error_popup"] = s.error_popup;
     j["show_help"] = s.show_help;
+    j["scene_name"] = s.scene.name;
+    j["status"] = s.status_message;
+    // Whether a text field had the keyboard on the last frame (tests wait for it before typing).
+    j["text_input"] = ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantTextInput;
     const OrbitCamera& c = view.camera;
     nlohmann::json panes = nlohmann::json::array();
     for (const ViewPane& p : view.panes) panes.push_back({p.rect.x, p.rect.y, p.rect.w, p.rect.h});
@@ -60,7 +95,11 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
                  {"split", s.split_view},
                  {"camera", {{"target", {c.target.x, c.target.y, c.target.z}}, {"yaw", c.yaw}, {"pitch", c.pitch},
                              {"distance", c.distance}}},
-                 {"panes", panes}};
+                 // The camera's screen axes in the world (screen right, screen up).
+                 {"right", vec3(Vec3(camera_right(c)))},
+                 {"up", vec3(Vec3(camera_up(c)))},
+                 {"panes", panes},
+                 {"aim", aim_json(s, view)}};
     j["t"] = s.experiment ? s.experiment->time() : 0.0;
     j["base_steps"] = s.experiment ? s.experiment->base_steps() : 0;
     nlohmann::json variants = nlohmann::json::array();

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "app/camera.hpp"
+#include "app/launch_gesture.hpp"
 #include "app/view_panes.hpp"
 #include "ui/lab_session.hpp"
 
@@ -10,10 +11,12 @@
 
 namespace pl::app {
 
-// What the 3D view showed: the camera, and the panes it drew (tests click particles through it).
+// What the 3D view showed: the camera, the panes it drew (tests click particles through it) and
+// a launch being aimed.
 struct ViewSnapshot {
     OrbitCamera camera;
     std::vector<ViewPane> panes;
+    LaunchAim aim;
 };
 
 // Written to a temporary file and renamed, so a reader never sees half a dump.

@@ -33,7 +33,12 @@ std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& ca
     if (drag.button < 0 && pane) {
         for (int b : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle})
             if (ImGui::IsMouseClicked(b)) {
-                drag = {b, mx, my, false};
+                drag = ViewDrag{};
+                drag.button = b;
+                drag.press_x = mx;
+                drag.press_y = my;
+                drag.aiming = b == ImGuiMouseButton_Left && io.KeyCtrl;
+                if (drag.aiming) begin_launch_aim(drag.aim, session, panes, *pane, camera, mx, my);
                 break;
             }
     }
@@ -42,7 +47,10 @@ std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& ca
         if (std::hypot(mx - drag.press_x, my - drag.press_y) > click_tolerance_px) drag.moved = true;
         const ImVec2 d = io.MouseDelta;
         const bool pan_drag = drag.button != ImGuiMouseButton_Left || io.KeyShift;
-        if (drag.moved && (d.x != 0.0f || d.y != 0.0f)) {
+        if (drag.aiming) {
+            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) cancel_launch_aim(drag.aim);
+            update_launch_aim(drag.aim, session, panes, camera, mx, my);
+        } else if (drag.moved && (d.x != 0.0f || d.y != 0.0f)) {
             if (pan_drag) {
                 const float height = pane ? panes[*pane].rect.h : panes.front().rect.h;
                 pan(camera, glm::vec2(d.x, d.y), height);
@@ -52,12 +60,15 @@ std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& ca
         }
         if (!ImGui::IsMouseDown(drag.button)) {
             clicked = !drag.moved && drag.button == ImGuiMouseButton_Left;
+            // A Ctrl+click without a drag only selects (below): nothing is launched.
+            if (drag.aiming && drag.moved) finish_launch_aim(drag.aim, session);
+            cancel_launch_aim(drag.aim);
             drag.button = -1;
         }
     }
     if (pane && io.MouseWheel != 0.0f) zoom(camera, io.MouseWheel);
 
-    if (!pane || !session.experiment || (drag.button >= 0 && drag.moved)) return std::nullopt;
+    if (!pane || !session.experiment || (drag.button >= 0 && (drag.moved || drag.aiming))) return std::nullopt;
     const ViewPane& p = panes[*pane];
     const CameraMatrices cam = camera_matrices(camera, p.rect.w / std::max(p.rect.h, 1.0f));
     const std::optional<ParticleRef> hit =

@@ -134,3 +134,22 @@ wait_exit() {
     wait "$APP_PID" || APP_EXIT_CODE=$?
     APP_PID=""
 }
+
+# Holds a key down for a moment: ImGui 1.86 widgets (Enter in a text field, a dialog's Enter)
+# see a key only if it is still down when a frame starts; `press` may be too quick for them.
+hold_key() {
+    xdotool windowfocus --sync "$APP_WINDOW"
+    xdotool keydown "$1"
+    sleep 0.12
+    xdotool keyup "$1"
+}
+
+# Opens a preset the way a user types it: Ctrl+O puts the keyboard in the preset panel's path
+# field (its old text selected), then the path and Enter. `state` is the --dump-state file.
+open_by_path() {
+    local path=$1 state=$2
+    press ctrl+o
+    wait_for_state "$state" 'd["text_input"]' "Ctrl+O did not put the keyboard in the open field"
+    xdotool type --delay 4 "$path"
+    hold_key Return
+}
