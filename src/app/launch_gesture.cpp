@@ -37,21 +37,28 @@ void draw_segments(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane, 
     }
 }
 
-// Speed, elevation and azimuth in a dark box beside the cursor, kept inside the pane.
-void draw_readout(ImDrawList* dl, const Rect& pane, const LaunchAim& aim, double arrow_time_s) {
+// Speed, elevation and azimuth in a dark box beside the cursor, kept inside the pane. It goes on
+// the far side of the cursor from the particle (`anchor`, on screen), so it does not cover the arrow.
+void draw_readout(ImDrawList* dl, const Rect& pane, const LaunchAim& aim, double arrow_time_s, ImVec2 anchor) {
     const LaunchPolar p = launch_polar(aim.velocity);
     const std::string text = fmt::format(
         "{:.3g} m/s{}\nelevation {:.1f}\u00b0\nazimuth {:.1f}\u00b0\narrow: straight path in {:.2g} s\nrelease: launch   Esc / right-click: cancel",
         p.speed_mps, aim.clamped ? " (max)" : "", p.elevation_deg, p.azimuth_deg, arrow_time_s);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     constexpr float pad = 6.0f, gap = 18.0f;
-    float x = aim.cursor_x + gap, y = aim.cursor_y + gap;
-    if (x + size.x + 2 * pad > pane.right()) x = aim.cursor_x - gap - size.x - 2 * pad;
-    if (y + size.y + 2 * pad > pane.bottom()) y = aim.cursor_y - gap - size.y - 2 * pad;
+    const float w = size.x + 2 * pad, h = size.y + 2 * pad;
+    const float after_x = aim.cursor_x + gap, before_x = aim.cursor_x - gap - w;
+    const float after_y = aim.cursor_y + gap, before_y = aim.cursor_y - gap - h;
+    float x = aim.cursor_x >= anchor.x ? after_x : before_x;
+    float y = aim.cursor_y >= anchor.y ? after_y : before_y;
+    if (x + w > pane.right()) x = before_x;
+    if (x < pane.x) x = after_x;
+    if (y + h > pane.bottom()) y = before_y;
+    if (y < pane.y) y = after_y;
     x = std::max(x, pane.x);
     y = std::max(y, pane.y);
-    dl->AddRectFilled(ImVec2(x, y), ImVec2(x + size.x + 2 * pad, y + size.y + 2 * pad), IM_COL32(18, 20, 26, 215), 4.0f);
-    dl->AddRect(ImVec2(x, y), ImVec2(x + size.x + 2 * pad, y + size.y + 2 * pad), to_u32(shadow_color), 4.0f);
+    dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(18, 20, 26, 215), 4.0f);
+    dl->AddRect(ImVec2(x, y), ImVec2(x + w, y + h), to_u32(shadow_color), 4.0f);
     dl->AddText(ImVec2(x + pad, y + pad), IM_COL32(240, 232, 210, 255), text.c_str());
 }
 
@@ -147,8 +154,8 @@ void finish_launch_aim(LaunchAim& aim, ui::LabSession& s) {
     s.launch_velocity = aim.velocity;
     ui::panels_of(s).launch_from_velocity = true;  // the Launch section shows the aimed speed and angles
     const LaunchPolar p = launch_polar(aim.velocity);
-    s.status_message = fmt::format("Launched particle {} at {:.3g} m/s, elevation {:.1f}\u00b0, azimuth {:.1f}\u00b0{}", aim.particle,
-                                   p.speed_mps, p.elevation_deg, p.azimuth_deg, s.paused ? " (paused: space to run)" : "");
+    s.status_message = fmt::format("Launched particle {} at {:.3g} m/s, elevation {:.1f}\u00b0, azimuth {:.1f}\u00b0", aim.particle,
+                                   p.speed_mps, p.elevation_deg, p.azimuth_deg);
 }
 
 void draw_launch_aim(const LaunchAim& aim, const ui::LabSession& s, const std::vector<ViewPane>& panes,
@@ -175,8 +182,12 @@ void draw_launch_aim(const LaunchAim& aim, const ui::LabSession& s, const std::v
     dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.right(), r.bottom()), true);
     draw_segments(dl, cam, r, shadow, 1.5f);
     draw_segments(dl, cam, r, arrow, 3.0f);
-    if (const auto p = project(cam, r, from)) dl->AddCircleFilled(ImVec2(p->x, p->y), 3.5f, to_u32(aim_color));
-    draw_readout(dl, r, aim, arrow_time_s);
+    ImVec2 anchor(aim.cursor_x, aim.cursor_y);
+    if (const auto p = project(cam, r, from)) {
+        anchor = ImVec2(p->x, p->y);
+        dl->AddCircleFilled(anchor, 3.5f, to_u32(aim_color));
+    }
+    draw_readout(dl, r, aim, arrow_time_s, anchor);
     dl->PopClipRect();
 }
 
