@@ -281,10 +281,12 @@ private:
             for (std::size_t j = k; j < k + 8 && c + j < c_end; ++j) {
                 if (!flagged[j]) continue;
                 const std::size_t i = c + j;
-                prefetch(&s_.drag_k[i]);
-                prefetch(&s_.drag_re_scale[i]);
-                prefetch(&s_.mass[i]);
-                prefetch(&s_.radius[i]);
+                if (!identical_) {
+                    prefetch(&s_.drag_k[i]);
+                    prefetch(&s_.drag_re_scale[i]);
+                    prefetch(&s_.mass[i]);
+                    prefetch(&s_.radius[i]);
+                }
                 prefetch(&s_.dissipated_bounce[i]);
                 prefetch(&s_.dissipated_friction[i]);
             }
@@ -310,8 +312,9 @@ private:
         } else {
             if (s_.resting[i] | s_.frozen[i]) return false;
             const F saved = f_;
-            f_.drag = {s_.drag_k[i], s_.drag_re_scale[i]};
-            const double r = s_.radius[i];
+            const std::size_t q = identical_ ? 0 : i;  // whose mass, radius and drag constants
+            f_.drag = {s_.drag_k[q], s_.drag_re_scale[q]};
+            const double r = s_.radius[q];
             FlightState y0;
             y0.x = s_.position(i);
             y0.v = s_.velocity(i);
@@ -350,7 +353,7 @@ private:
             p.resting = 0;
             p.bounce_loss = 0.0 + hit.bounce_loss_per_kg;
             p.friction_loss = 0.0 + hit.friction_loss_per_kg;
-            store_step<Drag, HasWind>(s_, i, p, nullptr);
+            store_step<Drag, HasWind>(s_, i, p, nullptr, s_.mass[q]);
             return true;
         }
     }
@@ -368,9 +371,10 @@ private:
     void step_generic(std::size_t i) {
         if (s_.frozen[i]) return;
         const auto id = static_cast<std::uint32_t>(i);
-        f_.drag = {s_.drag_k[i], s_.drag_re_scale[i]};
+        const std::size_t q = identical_ ? 0 : i;
+        f_.drag = {s_.drag_k[q], s_.drag_re_scale[q]};
         std::vector<double>* hints = adaptive_on_ ? &sim_.adaptive_step_hint() : nullptr;
-        ParticleStep p = load_step(s_, i, hints);
+        ParticleStep p = load_step(s_, i, hints, s_.radius[q]);
         stepper_.advance(p, id, t0_, h_);
         if (!is_finite(p.y)) {
             s_.frozen[i] = 1;
@@ -378,7 +382,7 @@ private:
             out_.frozen.push_back(id);
             return;
         }
-        store_step<Drag, HasWind>(s_, i, p, hints);
+        store_step<Drag, HasWind>(s_, i, p, hints, s_.mass[q]);
     }
 
     Simulation& sim_;

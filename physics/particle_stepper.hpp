@@ -45,25 +45,26 @@ inline bool is_finite(const FlightState& y) {
            std::isfinite(y.v.y) && std::isfinite(y.v.z) && std::isfinite(y.drag_loss) && std::isfinite(y.wind_gain);
 }
 
-// Particle i of the state arrays as the stepper's working copy (`hints`: dopri5 only).
-inline ParticleStep load_step(const ParticleState& s, std::size_t i, const std::vector<double>* hints) {
+// Particle i of the state arrays as the stepper's working copy (`hints`: dopri5 only; `radius`:
+// the particle's radius).
+inline ParticleStep load_step(const ParticleState& s, std::size_t i, const std::vector<double>* hints, double radius) {
     ParticleStep p;
     p.y.x = s.position(i);
     p.y.v = s.velocity(i);
-    p.radius = s.radius[i];
+    p.radius = radius;
     p.resting = s.resting[i];
     if (hints) p.step_hint = (*hints)[i];
     return p;
 }
 
-// Writes a stepped particle back, adding its ledger increments (per-kg losses times the mass).
+// Writes a stepped particle back, adding its ledger increments (per-kg losses times `mass`, the
+// particle's mass).
 template <DragModel Drag, bool HasWind>
-void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints) {
+void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass) {
     s.set_position(i, p.y.x);
     s.set_velocity(i, p.y.v);
     s.resting[i] = p.resting;
     if (hints) (*hints)[i] = p.step_hint;
-    const double mass = s.mass[i];
     s.dissipated_bounce[i] += mass * p.bounce_loss;
     s.dissipated_friction[i] += mass * p.friction_loss;
     if constexpr (Drag != DragModel::none) {

@@ -36,7 +36,7 @@ void step_kernel(Simulation& sim) {
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (s.frozen[i]) continue;
         f.drag = {s.drag_k[i], s.drag_re_scale[i]};
-        ParticleStep p = load_step(s, i, adaptive_on ? &hints : nullptr);
+        ParticleStep p = load_step(s, i, adaptive_on ? &hints : nullptr, s.radius[i]);
         stepper.advance(p, static_cast<std::uint32_t>(i), t0, h);
         if (!is_finite(p.y)) {
             // Keep the last finite state and stop stepping this particle.
@@ -49,7 +49,7 @@ void step_kernel(Simulation& sim) {
                                   i, t0));
             continue;
         }
-        store_step<Drag, HasWind>(s, i, p, adaptive_on ? &hints : nullptr);
+        store_step<Drag, HasWind>(s, i, p, adaptive_on ? &hints : nullptr, s.mass[i]);
     }
     add_counts(sim.mutable_counters(), f, adaptive, contact_solves);
 }
@@ -161,6 +161,10 @@ Vec3 Simulation::acceleration(std::size_t i) const {
 std::vector<Event> Simulation::drain_events() {
     std::vector<Event> out;
     out.swap(events_);
+    // The next steps produce about as many: room for them, so that the sink does not grow from
+    // empty after every drain (reallocating and touching fresh pages, the dearest part of an
+    // event in a large scene).
+    events_.reserve(out.size());
     return out;
 }
 
