@@ -85,6 +85,10 @@ void register_engine_benchmarks() {
     for (std::size_t n : sizes)
         register_engine(Workload::drag_walls, n, 1, Method::semi_implicit_euler,
                         "engine_generic_kernel/drag_walls/n:" + size_label(n), Timed::generic_step);
+    // Flight alone: the kernel where no wall is reached, against the limit in the same room.
+    for (std::size_t n : sizes)
+        register_engine(Workload::drag_open, n, 1, Method::semi_implicit_euler,
+                        "kernel/drag_open/n:" + size_label(n) + "/threads:1", Timed::kernel_only);
 }
 
 void register_method_benchmarks() {

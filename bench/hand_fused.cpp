@@ -4,6 +4,8 @@
 // vectorises it (-fno-math-errno lets sqrt vectorise). All balls of the workload are identical,
 // so the drag constant and the radius are hoisted out of the loop: nothing is read or written
 // but the six state arrays. It keeps no ledger, no events, no resting contact.
+#include "physics/fast_kernel.hpp"
+#include "physics/thread_pool.hpp"
 #include "registry.hpp"
 #include "workloads.hpp"
 
@@ -52,8 +54,22 @@ void fused_step(std::size_t n, double* __restrict x, double* __restrict y, doubl
     }
 }
 
-void fused_step(SoaState& s, const FusedParams& p) {
-    fused_step(s.x.size(), s.x.data(), s.y.data(), s.z.data(), s.vx.data(), s.vy.data(), s.vz.data(), p);
+void fused_step(SoaState& s, const FusedParams& p, std::size_t begin, std::size_t end) {
+    fused_step(end - begin, s.x.data() + begin, s.y.data() + begin, s.z.data() + begin, s.vx.data() + begin,
+               s.vy.data() + begin, s.vz.data() + begin, p);
+}
+
+// With threads > 1: the same particle ranges on the same thread pool as the engine, so the
+// two-thread speed-up of the limit shows what the machine allows at each size.
+void fused_step(SoaState& s, const FusedParams& p, int threads) {
+    const std::size_t n = s.x.size();
+    const std::size_t ranges = particle_ranges(n, threads);
+    if (ranges <= 1) {
+        fused_step(s, p, 0, n);
+        return;
+    }
+    auto task = [&](std::size_t k) { fused_step(s, p, range_begin(n, ranges, k), range_begin(n, ranges, k + 1)); };
+    ThreadPool::shared().run(ranges, std::min<std::size_t>(ranges, static_cast<std::size_t>(threads)), task);
 }
 
 void load(SoaState& s, const WorkloadScene& scene) {
@@ -70,8 +86,8 @@ void load(SoaState& s, const WorkloadScene& scene) {
     }
 }
 
-void run_limit(benchmark::State& state, std::size_t n) {
-    const WorkloadScene scene = make_workload(Workload::drag_walls, n);
+void run_limit(benchmark::State& state, Workload w, std::size_t n, int threads) {
+    const WorkloadScene scene = make_workload(w, n);
     const Model& m = scene.model;
     const ParticleSpec& ball = scene.particles.front();
     const double r = ball.radius;
@@ -98,7 +114,7 @@ void run_limit(benchmark::State& state, std::size_t n) {
             steps = 0;
             state.ResumeTiming();
         }
-        fused_step(s, p);
+        fused_step(s, p, threads);
         ++steps;
     }
     benchmark::DoNotOptimize(s.x.data());
@@ -109,11 +125,22 @@ void run_limit(benchmark::State& state, std::size_t n) {
 }  // namespace
 
 void register_limit_benchmarks() {
-    for (std::size_t n : sizes)
-        benchmark::RegisterBenchmark(("limit_hand_fused/drag_walls/n:" + size_label(n)).c_str(),
-                                     [n](benchmark::State& state) { run_limit(state, n); })
+    for (Workload w : {Workload::drag_walls, Workload::drag_open})
+        for (std::size_t n : sizes)
+            benchmark::RegisterBenchmark(
+                (std::string("limit_hand_fused/") + to_string(w) + "/n:" + size_label(n)).c_str(),
+                [w, n](benchmark::State& state) { run_limit(state, w, n, 1); })
+                ->UseRealTime()
+                ->Unit(benchmark::kMicrosecond);
+    if (hardware_threads() < 2) return;
+    for (std::size_t n : sizes) {
+        const int threads = hardware_threads();
+        benchmark::RegisterBenchmark(
+            ("limit_hand_fused/drag_walls/n:" + size_label(n) + "/threads:" + std::to_string(threads)).c_str(),
+            [n, threads](benchmark::State& state) { run_limit(state, Workload::drag_walls, n, threads); })
             ->UseRealTime()
             ->Unit(benchmark::kMicrosecond);
+    }
 }
 
 }  // namespace pl::bench

@@ -137,6 +137,35 @@ void print_comparison(const CollectingReporter& r, int all_threads) {
     }
 }
 
+// Where the engine's time goes beside the limit's: flight alone (no wall reached) and with the
+// walls, and how far two threads get with the limit's own loop on the same thread pool.
+void print_gap(const CollectingReporter& r, int all_threads) {
+    bool any = false;
+    for (std::size_t n : sizes) any = any || r.rate("kernel/drag_open/n:" + size_label(n) + "/threads:1");
+    if (!any) return;
+    fmt::print("\n## Where the gap to the limit is (particle-steps/s, 1 thread unless noted)\n\n");
+    fmt::print("open room = no wall reached in the timed window: the vectorised flight phase alone.\n\n");
+    fmt::print("| n | kernel, open room | limit, open room | ratio | kernel, walls | limit, walls | ratio | "
+               "limit, {0} threads | limit speed-up | kernel, {0} threads | kernel speed-up |\n",
+               all_threads);
+    fmt::print("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (std::size_t n : sizes) {
+        const std::string size = size_label(n);
+        const std::string all = "/threads:" + std::to_string(all_threads);
+        const auto open = r.rate("kernel/drag_open/n:" + size + "/threads:1");
+        const auto open_limit = r.rate("limit_hand_fused/drag_open/n:" + size);
+        const auto walls = r.rate("kernel/drag_walls/n:" + size + "/threads:1");
+        const auto walls_limit = r.rate("limit_hand_fused/drag_walls/n:" + size);
+        const auto limit_all = all_threads > 1 ? r.rate("limit_hand_fused/drag_walls/n:" + size + all) : std::nullopt;
+        const auto kernel_all = all_threads > 1 ? r.rate("kernel/drag_walls/n:" + size + all) : std::nullopt;
+        if (!open && !walls) continue;
+        fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", size, rate_text(open),
+                   rate_text(open_limit), ratio_text(open, open_limit), rate_text(walls), rate_text(walls_limit),
+                   ratio_text(walls, walls_limit), rate_text(limit_all), ratio_text(limit_all, walls_limit, "x"),
+                   rate_text(kernel_all), ratio_text(kernel_all, walls, "x"));
+    }
+}
+
 void print_workloads(const CollectingReporter& r, int all_threads) {
     bool any = false;
     for (Workload w : {Workload::gravity, Workload::drag_walls, Workload::drag_walls_shear})
@@ -237,6 +266,7 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks(&reporter);
     const int all_threads = pl::hardware_threads();
     print_comparison(reporter, all_threads);
+    print_gap(reporter, all_threads);
     print_workloads(reporter, all_threads);
     print_methods(reporter);
     print_accuracy(reporter);

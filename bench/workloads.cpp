@@ -10,6 +10,7 @@ const char* to_string(Workload w) {
         case Workload::gravity: return "gravity";
         case Workload::drag_walls: return "drag_walls";
         case Workload::drag_walls_shear: return "drag_walls_shear";
+        case Workload::drag_open: return "drag_open";
     }
     return "?";
 }
@@ -18,7 +19,7 @@ WorkloadScene make_workload(Workload w, std::size_t n, Method method) {
     WorkloadScene s;
     Model& m = s.model;
     m.label = to_string(w);
-    m.room.center = {0.0, 3.0, 0.0};
+    m.room.center = {0.0, w == Workload::drag_open ? 500.0 : 3.0, 0.0};
     m.room.size = {10.0, 6.0, 10.0};
     m.contact.restitution = 0.8;
     m.contact.friction = 0.0;
@@ -43,6 +44,7 @@ WorkloadScene make_workload(Workload w, std::size_t n, Method method) {
     e.speed_max = 5.0;
     e.spread_deg = 180.0;
     s.particles = emit_particles(e, m.room);
+    if (w == Workload::drag_open) m.room.size = {1000.0, 1000.0, 1000.0};  // floor 497 m below the balls
     return s;
 }
 

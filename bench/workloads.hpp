@@ -15,6 +15,7 @@ enum class Workload {
     gravity,           // gravity only (walls still bounce)
     drag_walls,        // gravity + quadratic drag + six walls: the comparison workload
     drag_walls_shear,  // the same in a power-law shear wind
+    drag_open,         // drag_walls in a room 1 km wide: no wall is reached, only flight is timed
 };
 const char* to_string(Workload w);
 
