@@ -1,10 +1,11 @@
 // Advances one particle through one fixed step, with exact wall handling:
 //  * in flight the chosen method integrates; if the end of the step is outside a wall, the
-//    time of impact is located on the step's own trajectory (the method re-run with a shorter
-//    step, a continuous function of the step length; for adaptive Dormand-Prince, its dense
-//    output inside the internal step that crossed) by a bracketing root search, the
-//    particle is advanced to the wall, the impact response is applied, and the rest of the
-//    step continues from there;
+//    time of impact is located on the step's own trajectory: in closed form where the
+//    position is a quadratic in the step length (explicit and semi-implicit Euler, velocity
+//    Verlet), otherwise by a bracketing root search on the method re-run with a shorter step
+//    (for adaptive Dormand-Prince, on its dense output inside the internal step that
+//    crossed); the particle is advanced to the wall, the impact response is applied, and the
+//    rest of the step continues from there;
 //  * a particle resting on walls (rebound speed fell below rest_speed while the net force
 //    pressed it on the wall) moves in the wall's plane with the normal force cancelling the
 //    pressing acceleration and Coulomb friction mu N opposing sliding; static friction holds it
