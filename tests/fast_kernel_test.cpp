@@ -114,6 +114,19 @@ TEST(FastKernel, BitIdenticalForIdenticalParticles) {
     EXPECT_FALSE(mixed.fast.identical_particles());
 }
 
+// Beyond cache_resident_particles phase 1 writes whole vectors instead of masked stores.
+TEST(FastKernel, BitIdenticalWhenTheStateStreamsFromMemory) {
+    const std::size_t n = cache_resident_particles + 1000;
+    for (const bool identical : {false, true}) {
+        SCOPED_TRACE(identical ? "identical particles" : "particles of their own");
+        Pair p(random_scenario(identical ? 301 : 302, Method::semi_implicit_euler, DragModel::quadratic,
+                               WindKind::none, n, identical));
+        p.step_n(12);
+        test::expect_identical(p.fast, p.generic);
+        EXPECT_GT(count_kind(p.generic.events(), EventKind::bounce), 1000u);
+    }
+}
+
 TEST(FastKernel, BitIdenticalUnderEveryWindKind) {
     std::uint64_t seed = 200;
     for (WindKind wind : {WindKind::constant, WindKind::gust, WindKind::shear, WindKind::vortex}) {
