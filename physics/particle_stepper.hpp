@@ -140,8 +140,11 @@ public:
                 return;
             }
             if (p.resting) {
-                if (release_walls(p, id, t)) continue;
-                slide(p, id, t, remaining);
+                // The forces at the step start decide the release and drive the slide (the
+                // release changes only which walls hold the particle, not x or v).
+                const Derivative d = f_(p.y.x, p.y.v, t);
+                if (release_walls(p, id, t, d)) continue;
+                slide(p, id, t, remaining, d);
                 return;
             }
             int wall = -1;
@@ -305,8 +308,7 @@ private:
 
     // Leaves every resting wall that the particle is kicked or pulled away from; returns true
     // when it is no longer resting on any wall.
-    bool release_walls(ParticleStep& p, std::uint32_t id, double t) const {
-        const Derivative d = f_(p.y.x, p.y.v, t);
+    bool release_walls(ParticleStep& p, std::uint32_t id, double t, const Derivative& d) const {
         for (int w = 0; w < wall_count; ++w) {
             if (!(p.resting & (1u << w))) continue;
             const Vec3 n = RoomBounds::inward_normal(w);
@@ -320,8 +322,7 @@ private:
     }
 
     // Resting contact for the rest of the step (first order, semi-implicit; see file comment).
-    void slide(ParticleStep& p, std::uint32_t id, double t, double h) const {
-        const Derivative d = f_(p.y.x, p.y.v, t);
+    void slide(ParticleStep& p, std::uint32_t id, double t, double h, const Derivative& d) const {
         Vec3 a = d.a;
         double press = 0.0;
         for (int w = 0; w < wall_count; ++w) {
