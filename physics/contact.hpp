@@ -58,7 +58,10 @@ inline ImpactResult impact(const Vec3& v, const Vec3& n, const ContactSettings& 
     const Vec3 vt = v - vn * n;
     const double vt_len = glm::length(vt);
     const double dvt = c.friction * (1.0 + c.restitution) * r.normal_speed_in;
-    const Vec3 vt_out = vt_len <= dvt ? Vec3(0.0) : vt * (1.0 - dvt / vt_len);
+    // Component by component, as selects (the contact kernel runs this eight particles at a time).
+    const bool stops = vt_len <= dvt;
+    const double keep = 1.0 - dvt / vt_len;
+    const Vec3 vt_out(stops ? 0.0 : vt.x * keep, stops ? 0.0 : vt.y * keep, stops ? 0.0 : vt.z * keep);
     r.v_out = vt_out + r.normal_speed_out * n;
     r.bounce_loss_per_kg = 0.5 * (r.normal_speed_in * r.normal_speed_in - r.normal_speed_out * r.normal_speed_out);
     r.friction_loss_per_kg = 0.5 * (vt_len * vt_len - glm::dot(vt_out, vt_out));

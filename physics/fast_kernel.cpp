@@ -113,6 +113,17 @@ inline double pick(std::uint64_t mask, double a, double b) {
     return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
+// The one of a, b, c (d, e, f) whose mask is all ones; exactly one mask is.
+inline double select3(std::uint64_t ma, double a, std::uint64_t mb, double b, std::uint64_t mc, double c) {
+    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & ma) | (std::bit_cast<std::uint64_t>(b) & mb) |
+                                 (std::bit_cast<std::uint64_t>(c) & mc));
+}
+inline double select6(std::uint64_t ma, double a, std::uint64_t mb, double b, std::uint64_t mc, double c,
+                      std::uint64_t md, double d, std::uint64_t me, double e, std::uint64_t mf, double f) {
+    return std::bit_cast<double>(std::bit_cast<std::uint64_t>(select3(ma, a, mb, b, mc, c)) |
+                                 std::bit_cast<std::uint64_t>(select3(md, d, me, e, mf, f)));
+}
+
 // Lane masks of phase 1 are 64-bit: a byte-sized value in the vectorised loop would make GCC
 // take 64 particles per iteration (one vector of bytes), spilling the 8-wide double vectors.
 using LaneMask = std::int64_t;
@@ -215,6 +226,10 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
     return finished;
 }
 
+// Flagged particles gathered before phase 2 runs (a full batch fills the vector lanes of the
+// contact kernel several times over; it stays small enough for the data to be in cache).
+constexpr std::size_t contact_batch = 64;
+
 template <Flight M, DragModel Drag, bool HasWind>
 class RangeStepper {
 public:
@@ -230,6 +245,11 @@ public:
           stepper_(ctx_, f_), t0_(sim.time()), h_(m_.integrator.dt) {
         f_.gravity = m_.world.gravity;
         f_.wind = &sim.wind();
+        if constexpr (M != Flight::none) {
+            F probe = f_;  // with the wind field: a step may look it up
+            fixed_step<M>(FlightState{}, t0_, h_, probe);
+            evals_per_step_ = probe.gravity_evals - f_.gravity_evals;
+        }
     }
 
     void run(std::size_t begin, std::size_t end) {
@@ -237,28 +257,24 @@ public:
         if constexpr (M == Flight::none) {
             for (std::size_t i = begin; i < end; ++i) step_generic(i);
         } else {
-            // Phase 2 of a chunk runs after phase 1 of the next one, with the memory the generic
-            // path reads but phase 1 does not (ledger entries, per-particle constants) prefetched
-            // in between: in a large scene those are cache misses, now overlapped with useful
-            // work. Particles of different chunks are independent, so the results are the same.
-            LaneMask blocked[fast_chunk], flagged[2][fast_chunk];
-            std::size_t pending_begin = 0, pending_end = 0;  // a chunk waiting for phase 2
-            int current = 0;
+            // Phase 2 waits until a batch of flagged particles has gathered (from several chunks
+            // in a sparse scene), in particle order; meanwhile the memory it will read and
+            // phase 1 did not is prefetched. Particles are independent and only phase 2 makes
+            // events, so the results and the order of the events are the same.
+            LaneMask blocked[fast_chunk], flagged[fast_chunk];
             for (std::size_t c = begin; c < end; c += fast_chunk) {
                 const std::size_t c_end = std::min(end, c + fast_chunk);
                 blocked_lanes(s_, c, c_end, blocked);
-                LaneMask* const flags = flagged[current];
-                const std::size_t finished = flight(c, c_end, blocked, flags);
+                const std::size_t finished = flight(c, c_end, blocked, flagged);
                 fast += finished;
-                if (pending_end > pending_begin) contact_phase(pending_begin, pending_end, flagged[1 - current]);
-                pending_begin = pending_end = c_end;
-                if (finished < c_end - c) {
-                    prefetch_generic(c, c_end, flags);
-                    pending_begin = c;
-                    current = 1 - current;
-                }
+                if (finished == c_end - c) continue;
+                for_each_flagged(c, c_end, flagged, [this](std::size_t i) {
+                    pending_[pending_count_++] = static_cast<std::uint32_t>(i);
+                    prefetch_generic(i);
+                });
+                if (pending_count_ >= contact_batch) contact_phase();
             }
-            if (pending_end > pending_begin) contact_phase(pending_begin, pending_end, flagged[1 - current]);
+            if (pending_count_ > 0) contact_phase();
         }
         ForceCounters& c = out_.counters;
         add_counts(c, f_, adaptive_, contact_solves_);
@@ -300,33 +316,178 @@ private:
                             : flight_chunk<M, Drag, HasWind, false, false>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags);
     }
 
-    // Asks for the memory step_generic reads and phase 1 did not, for the flagged particles of
-    // a chunk.
-    void prefetch_generic(std::size_t c, std::size_t c_end, const LaneMask* flagged) {
-        for (std::size_t k = 0; c + k < c_end; k += 8) {
-            LaneMask any = 0;
-            for (std::size_t j = k; j < k + 8 && c + j < c_end; ++j) any |= flagged[j];
-            if (!any) continue;
-            for (std::size_t j = k; j < k + 8 && c + j < c_end; ++j) {
-                if (!flagged[j]) continue;
-                const std::size_t i = c + j;
-                if (!identical_) {
-                    prefetch(&s_.drag_k[i]);
-                    prefetch(&s_.drag_re_scale[i]);
-                    prefetch(&s_.mass[i]);
-                    prefetch(&s_.radius[i]);
-                }
-                prefetch(&s_.dissipated_bounce[i]);
-                prefetch(&s_.dissipated_friction[i]);
+    // Asks for the memory phase 2 reads for particle i and phase 1 did not.
+    void prefetch_generic(std::size_t i) const {
+        if (!identical_) {
+            prefetch(&s_.drag_k[i]);
+            prefetch(&s_.drag_re_scale[i]);
+            prefetch(&s_.mass[i]);
+            prefetch(&s_.radius[i]);
+        }
+        prefetch(&s_.dissipated_bounce[i]);
+        prefetch(&s_.dissipated_friction[i]);
+    }
+
+    // Phase 2 for the pending particles, in order: free particles of methods whose position is
+    // a polynomial in the step (no wind) go through bounce_lanes, eight at a time; the ones it
+    // cannot finish, and every other flagged particle, through the scalar paths.
+    void contact_phase() {
+        const std::size_t n = pending_count_;
+        pending_count_ = 0;
+        if constexpr (has_polynomial_position(method_of(M)) && !HasWind) {
+            BounceLanes lanes;
+            std::size_t k = 0;
+            for (std::size_t q = 0; q < n; ++q) {
+                const std::uint32_t i = pending_[q];
+                if (s_.resting[i] | s_.frozen[i]) continue;
+                const std::size_t p = identical_ ? 0 : i;
+                lanes.x[k] = s_.x[i];
+                lanes.y[k] = s_.y[i];
+                lanes.z[k] = s_.z[i];
+                lanes.vx[k] = s_.vx[i];
+                lanes.vy[k] = s_.vy[i];
+                lanes.vz[k] = s_.vz[i];
+                lanes.k[k] = s_.drag_k[p];
+                lanes.re_scale[k] = s_.drag_re_scale[p];
+                lanes.r[k] = s_.radius[p];
+                ++k;
             }
+            bounce_lanes(lanes, k);
+            std::size_t j = 0;
+            for (std::size_t q = 0; q < n; ++q) {
+                const std::uint32_t i = pending_[q];
+                if (s_.resting[i] | s_.frozen[i]) {
+                    step_generic(i);
+                    continue;
+                }
+                if (lanes.ok[j]) commit_bounce(lanes, j, i);
+                else step_generic(i);
+                ++j;
+            }
+        } else {
+            for (std::size_t q = 0; q < n; ++q)
+                if (!single_bounce(pending_[q])) step_generic(pending_[q]);
         }
     }
 
-    // Phase 2 for one chunk.
-    void contact_phase(std::size_t c, std::size_t c_end, const LaneMask* flagged) {
-        for_each_flagged(c, c_end, flagged, [this](std::size_t i) {
-            if (!single_bounce(i)) step_generic(i);
-        });
+    // Flagged free particles of one batch, and what bounce_lanes made of them.
+    struct BounceLanes {
+        static constexpr std::size_t capacity = contact_batch + fast_chunk;
+        double x[capacity], y[capacity], z[capacity], vx[capacity], vy[capacity], vz[capacity];
+        double k[capacity], re_scale[capacity], r[capacity];
+        double drag_loss[capacity], bounce_loss[capacity], friction_loss[capacity];
+        double t[capacity], speed_in[capacity], speed_out[capacity];
+        std::int64_t wall[capacity], ok[capacity], notify[capacity], flights[capacity];
+    };
+
+    // single_bounce for lanes [0, n) without branches, so that it vectorises: every case is
+    // computed and selected, the wall and its axis are picked by selects instead of indexing.
+    // ok[j] says the particle took the single-bounce course; the others are left untouched for
+    // the generic path. The same operations in the same order as single_bounce (and so as
+    // ParticleStepper::advance); fast_kernel_test checks the bits.
+    void bounce_lanes(BounceLanes& L, std::size_t n) const {
+        constexpr double kappa = position_kappa(method_of(M));
+        const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
+        const double lo_x = room_.lo.x, lo_y = room_.lo.y, lo_z = room_.lo.z;
+        const double hi_x = room_.hi.x, hi_y = room_.hi.y, hi_z = room_.hi.z;
+        const RoomBounds room = room_;
+        const ContactSettings contact = m_.contact;
+        const double t0 = t0_, h = h_;
+#pragma GCC ivdep
+        for (std::size_t j = 0; j < n; ++j) {
+            Forces<Drag, false> f;
+            set_forces(f, gx, gy, gz, nullptr, L.k[j], L.re_scale[j], 0.0, 0.0, 0.0);
+            const double r = L.r[j];
+            FlightState y0;
+            y0.x = Vec3(L.x[j], L.y[j], L.z[j]);
+            y0.v = Vec3(L.vx[j], L.vy[j], L.vz[j]);
+            const FlightState end = fixed_step<M>(y0, t0, h, f);
+            const bool c0 = !(end.x.x - (lo_x + r) >= 0.0), c1 = !((hi_x - r) - end.x.x >= 0.0);
+            const bool c2 = !(end.x.y - (lo_y + r) >= 0.0), c3 = !((hi_y - r) - end.x.y >= 0.0);
+            const bool c4 = !(end.x.z - (lo_z + r) >= 0.0), c5 = !((hi_z - r) - end.x.z >= 0.0);
+            const int crossed = c0 + c1 + c2 + c3 + c4 + c5;
+            const std::int64_t wall = c5 ? 5 : c4 ? 4 : c3 ? 3 : c2 ? 2 : c1 ? 1 : 0;
+            const bool is_max = (wall & 1) != 0;
+            const Vec3 a0 = f(y0.x, y0.v, t0).a;
+            // Selections by wall and axis as bit masks (exact, and they vectorise where a chain
+            // of conditionals does not).
+            const std::uint64_t w0 = wall == 0 ? ~std::uint64_t{0} : 0, w1 = wall == 1 ? ~std::uint64_t{0} : 0;
+            const std::uint64_t w2 = wall == 2 ? ~std::uint64_t{0} : 0, w3 = wall == 3 ? ~std::uint64_t{0} : 0;
+            const std::uint64_t w4 = wall == 4 ? ~std::uint64_t{0} : 0, w5 = wall == 5 ? ~std::uint64_t{0} : 0;
+            const std::uint64_t ax = w0 | w1, ay = w2 | w3, az = w4 | w5;
+            const double d0 = select6(w0, y0.x.x - (lo_x + r), w1, (hi_x - r) - y0.x.x, w2, y0.x.y - (lo_y + r), w3,
+                                      (hi_y - r) - y0.x.y, w4, y0.x.z - (lo_z + r), w5, (hi_z - r) - y0.x.z);
+            const double sign = is_max ? -1.0 : 1.0;
+            const double v_axis = select3(ax, y0.v.x, ay, y0.v.y, az, y0.v.z);
+            const double a_axis = select3(ax, a0.x, ay, a0.y, az, a0.z);
+            const double s_hit = first_contact_root(d0, sign * v_axis, sign * kappa * a_axis, h);
+            const FlightState part = fixed_step<M>(y0, t0, s_hit, f);
+            const bool moved = s_hit > 0.0;
+            FlightState y;
+            y.x = Vec3(moved ? part.x.x : y0.x.x, moved ? part.x.y : y0.x.y, moved ? part.x.z : y0.x.z);
+            y.v = Vec3(moved ? part.v.x : y0.v.x, moved ? part.v.y : y0.v.y, moved ? part.v.z : y0.v.z);
+            y.drag_loss = moved ? part.drag_loss : y0.drag_loss;
+            y.wind_gain = moved ? part.wind_gain : y0.wind_gain;
+            const double plane =
+                select6(w0, lo_x + r, w1, hi_x - r, w2, lo_y + r, w3, hi_y - r, w4, lo_z + r, w5, hi_z - r);
+            y.x = Vec3(pick(ax, plane, y.x.x), pick(ay, plane, y.x.y), pick(az, plane, y.x.z));
+            y.x = room.clamp_inside(y.x, r);
+            const double t = t0 + s_hit, remaining = h - s_hit;
+            const double speed_in = glm::length(y.v);
+            const double n_sign = is_max ? -1.0 : 1.0;
+            const Vec3 normal(pick(ax, n_sign, 0.0), pick(ay, n_sign, 0.0), pick(az, n_sign, 0.0));
+            const ImpactResult hit = impact(y.v, normal, contact);
+            const bool slow = hit.normal_speed_out < contact.rest_speed;
+            y.v = hit.v_out;
+            const double speed_out = glm::length(y.v);
+            const FlightState y_end = fixed_step<M>(y, t, remaining, f);
+            const bool end_inside = (y_end.x.x - (lo_x + r) >= 0.0) & ((hi_x - r) - y_end.x.x >= 0.0) &
+                                    (y_end.x.y - (lo_y + r) >= 0.0) & ((hi_y - r) - y_end.x.y >= 0.0) &
+                                    (y_end.x.z - (lo_z + r) >= 0.0) & ((hi_z - r) - y_end.x.z >= 0.0);
+            const bool go_on = remaining > 0.0;
+            const double ox = go_on ? y_end.x.x : y.x.x, oy = go_on ? y_end.x.y : y.x.y;
+            const double oz = go_on ? y_end.x.z : y.x.z, ovx = go_on ? y_end.v.x : y.v.x;
+            const double ovy = go_on ? y_end.v.y : y.v.y, ovz = go_on ? y_end.v.z : y.v.z;
+            const double loss = go_on ? y_end.drag_loss : y.drag_loss;
+            const double gain = go_on ? y_end.wind_gain : y.wind_gain;
+            // Conservative: a finite state whose sum overflows goes to the generic path too.
+            const bool finite = all_finite(ox, oy, oz, ovx, ovy) & all_finite(ovz, loss, gain, 0.0, 0.0);
+            L.ok[j] = (crossed == 1) & !slow & (!go_on | end_inside) & finite;
+            L.x[j] = ox;
+            L.y[j] = oy;
+            L.z[j] = oz;
+            L.vx[j] = ovx;
+            L.vy[j] = ovy;
+            L.vz[j] = ovz;
+            L.drag_loss[j] = loss;
+            L.bounce_loss[j] = 0.0 + hit.bounce_loss_per_kg;
+            L.friction_loss[j] = 0.0 + hit.friction_loss_per_kg;
+            L.t[j] = t;
+            L.speed_in[j] = speed_in;
+            L.speed_out[j] = speed_out;
+            L.wall[j] = wall;
+            L.notify[j] = hit.normal_speed_in > 0.0;
+            L.flights[j] = 1 + moved + go_on;
+        }
+    }
+
+    // Writes lane j's bounce back to particle i, as single_bounce does.
+    void commit_bounce(const BounceLanes& L, std::size_t j, std::uint32_t i) {
+        const std::uint64_t calls = evals_per_step_ * static_cast<std::uint64_t>(L.flights[j]) + 1;  // + a0
+        f_.gravity_evals += calls;
+        if constexpr (Drag != DragModel::none) f_.drag_evals += calls;
+        ++contact_solves_;
+        if (L.notify[j])
+            out_.events->push_back(
+                {L.t[j], i, static_cast<std::int8_t>(L.wall[j]), EventKind::bounce, L.speed_in[j], L.speed_out[j]});
+        ParticleStep p;
+        p.y.x = Vec3(L.x[j], L.y[j], L.z[j]);
+        p.y.v = Vec3(L.vx[j], L.vy[j], L.vz[j]);
+        p.y.drag_loss = L.drag_loss[j];
+        p.resting = 0;
+        p.bounce_loss = L.bounce_loss[j];
+        p.friction_loss = L.friction_loss[j];
+        store_step<Drag, HasWind>(s_, i, p, nullptr, s_.mass[identical_ ? 0 : i]);
     }
 
     // The common contact, straight through: a free particle whose step crosses exactly one wall,
@@ -422,6 +583,9 @@ private:
     const bool adaptive_on_;
     const bool identical_;
     const bool from_memory_;
+    std::uint32_t pending_[contact_batch + fast_chunk];  // flagged particles waiting for phase 2
+    std::size_t pending_count_ = 0;
+    std::uint64_t evals_per_step_ = 0;                   // force evaluations in one fixed step
     AdaptiveStats adaptive_;
     std::uint64_t contact_solves_ = 0;
     F f_;
