@@ -335,34 +335,49 @@ private:
         const std::size_t n = pending_count_;
         pending_count_ = 0;
         if constexpr (has_polynomial_position(method_of(M)) && !HasWind) {
+            // Which lanes each pending particle goes to: 0 bounce, 1 slide, 2 scalar.
+            std::uint8_t route[contact_batch + fast_chunk];
             BounceLanes lanes;
-            std::size_t k = 0;
+            SlideLanes sliding;
+            std::size_t k = 0, m = 0;
             for (std::size_t q = 0; q < n; ++q) {
                 const std::uint32_t i = pending_[q];
-                if (s_.resting[i] | s_.frozen[i]) continue;
+                const std::uint8_t walls = s_.resting[i];
+                route[q] = s_.frozen[i] ? 2 : walls == 0 ? 0 : std::has_single_bit(walls) ? 1 : 2;
                 const std::size_t p = identical_ ? 0 : i;
-                lanes.x[k] = s_.x[i];
-                lanes.y[k] = s_.y[i];
-                lanes.z[k] = s_.z[i];
-                lanes.vx[k] = s_.vx[i];
-                lanes.vy[k] = s_.vy[i];
-                lanes.vz[k] = s_.vz[i];
-                lanes.k[k] = s_.drag_k[p];
-                lanes.re_scale[k] = s_.drag_re_scale[p];
-                lanes.r[k] = s_.radius[p];
-                ++k;
+                if (route[q] == 0) {
+                    lanes.x[k] = s_.x[i];
+                    lanes.y[k] = s_.y[i];
+                    lanes.z[k] = s_.z[i];
+                    lanes.vx[k] = s_.vx[i];
+                    lanes.vy[k] = s_.vy[i];
+                    lanes.vz[k] = s_.vz[i];
+                    lanes.k[k] = s_.drag_k[p];
+                    lanes.re_scale[k] = s_.drag_re_scale[p];
+                    lanes.r[k] = s_.radius[p];
+                    ++k;
+                } else if (route[q] == 1) {
+                    sliding.x[m] = s_.x[i];
+                    sliding.y[m] = s_.y[i];
+                    sliding.z[m] = s_.z[i];
+                    sliding.vx[m] = s_.vx[i];
+                    sliding.vy[m] = s_.vy[i];
+                    sliding.vz[m] = s_.vz[i];
+                    sliding.k[m] = s_.drag_k[p];
+                    sliding.re_scale[m] = s_.drag_re_scale[p];
+                    sliding.r[m] = s_.radius[p];
+                    sliding.wall[m] = std::countr_zero(walls);
+                    ++m;
+                }
             }
             bounce_lanes(lanes, k);
-            std::size_t j = 0;
+            slide_lanes(sliding, m);
+            std::size_t j = 0, l = 0;
             for (std::size_t q = 0; q < n; ++q) {
                 const std::uint32_t i = pending_[q];
-                if (s_.resting[i] | s_.frozen[i]) {
-                    step_generic(i);
-                    continue;
-                }
-                if (lanes.ok[j]) commit_bounce(lanes, j, i);
+                if (route[q] == 0 && lanes.ok[j++]) commit_bounce(lanes, j - 1, i);
+                else if (route[q] == 1 && sliding.ok[l++]) commit_slide(sliding, l - 1, i);
                 else step_generic(i);
-                ++j;
             }
         } else {
             for (std::size_t q = 0; q < n; ++q)
@@ -469,6 +484,90 @@ private:
             L.notify[j] = hit.normal_speed_in > 0.0;
             L.flights[j] = 1 + moved + go_on;
         }
+    }
+
+    // Particles resting on one wall, and what slide_lanes made of them.
+    struct SlideLanes {
+        static constexpr std::size_t capacity = contact_batch + fast_chunk;
+        double x[capacity], y[capacity], z[capacity], vx[capacity], vy[capacity], vz[capacity];
+        double k[capacity], re_scale[capacity], r[capacity];
+        double drag_loss[capacity], friction_loss[capacity];
+        std::int64_t wall[capacity], ok[capacity];
+    };
+
+    // ParticleStepper::advance for a particle resting on one wall that stays on it, slides (or
+    // sticks) and reaches no other wall in the step, without branches (see bounce_lanes): the
+    // release test, then slide() for one wall. ok[j] is false where the particle is released,
+    // comes to a stop (an event) or slides into another wall; the generic path takes those.
+    void slide_lanes(SlideLanes& L, std::size_t n) const {
+        const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
+        const double lo_x = room_.lo.x, lo_y = room_.lo.y, lo_z = room_.lo.z;
+        const double hi_x = room_.hi.x, hi_y = room_.hi.y, hi_z = room_.hi.z;
+        const RoomBounds room = room_;
+        const double friction = m_.contact.friction;
+        const double t0 = t0_, h = h_;
+#pragma GCC ivdep
+        for (std::size_t j = 0; j < n; ++j) {
+            Forces<Drag, false> f;
+            set_forces(f, gx, gy, gz, nullptr, L.k[j], L.re_scale[j], 0.0, 0.0, 0.0);
+            const double r = L.r[j];
+            const std::int64_t wall = L.wall[j];
+            const std::uint64_t ax = wall < 2 ? ~std::uint64_t{0} : 0;
+            const std::uint64_t ay = (wall >> 1) == 1 ? ~std::uint64_t{0} : 0;
+            const std::uint64_t az = wall >= 4 ? ~std::uint64_t{0} : 0;
+            const double n_sign = (wall & 1) != 0 ? -1.0 : 1.0;
+            const Vec3 normal(pick(ax, n_sign, 0.0), pick(ay, n_sign, 0.0), pick(az, n_sign, 0.0));
+            const Vec3 x(L.x[j], L.y[j], L.z[j]);
+            Vec3 v(L.vx[j], L.vy[j], L.vz[j]);
+            const Derivative d = f(x, v, t0);
+            const bool released = (glm::dot(d.a, normal) > 0.0) | (glm::dot(v, normal) > 0.0);
+            Vec3 a = d.a;
+            double press = 0.0;
+            const double an = glm::dot(a, normal);
+            press -= an;
+            a -= an * normal;
+            v -= glm::dot(v, normal) * normal;
+            const Vec3 v_free = v + h * a;
+            const double jump = h * friction * press;
+            const double speed = glm::length(v_free);
+            const bool was_moving = (v.x != 0.0) | (v.y != 0.0) | (v.z != 0.0);
+            const bool stuck = speed <= jump;
+            const double keep = 1.0 - jump / speed;
+            const Vec3 v_new(stuck ? 0.0 : v_free.x * keep, stuck ? 0.0 : v_free.y * keep, stuck ? 0.0 : v_free.z * keep);
+            const double friction_loss = 0.0 + 0.5 * (speed * speed - glm::dot(v_new, v_new));
+            const double drag_loss = 0.0 + h * d.drag_power;
+            const bool still = (v_new.x == 0.0) & (v_new.y == 0.0) & (v_new.z == 0.0);
+            const Vec3 end = x + h * v_new;
+            const bool end_inside = (end.x - (lo_x + r) >= 0.0) & ((hi_x - r) - end.x >= 0.0) &
+                                    (end.y - (lo_y + r) >= 0.0) & ((hi_y - r) - end.y >= 0.0) &
+                                    (end.z - (lo_z + r) >= 0.0) & ((hi_z - r) - end.z >= 0.0);
+            const Vec3 moved = room.clamp_inside(end, r);
+            const Vec3 x_new(still ? x.x : moved.x, still ? x.y : moved.y, still ? x.z : moved.z);
+            const bool finite = all_finite(x_new.x, x_new.y, x_new.z, v_new.x, v_new.y) &
+                                all_finite(v_new.z, drag_loss, friction_loss, 0.0, 0.0);
+            L.ok[j] = !released & !(was_moving & still) & (still | end_inside) & finite;
+            L.x[j] = x_new.x;
+            L.y[j] = x_new.y;
+            L.z[j] = x_new.z;
+            L.vx[j] = v_new.x;
+            L.vy[j] = v_new.y;
+            L.vz[j] = v_new.z;
+            L.drag_loss[j] = drag_loss;
+            L.friction_loss[j] = friction_loss;
+        }
+    }
+
+    // Writes lane j's slide back to particle i (it keeps resting on its wall).
+    void commit_slide(const SlideLanes& L, std::size_t j, std::uint32_t i) {
+        ++f_.gravity_evals;
+        if constexpr (Drag != DragModel::none) ++f_.drag_evals;
+        ParticleStep p;
+        p.y.x = Vec3(L.x[j], L.y[j], L.z[j]);
+        p.y.v = Vec3(L.vx[j], L.vy[j], L.vz[j]);
+        p.y.drag_loss = L.drag_loss[j];
+        p.resting = s_.resting[i];
+        p.friction_loss = L.friction_loss[j];
+        store_step<Drag, HasWind>(s_, i, p, nullptr, s_.mass[identical_ ? 0 : i]);
     }
 
     // Writes lane j's bounce back to particle i, as single_bounce does.
