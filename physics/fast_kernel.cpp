@@ -113,6 +113,12 @@ inline double pick(std::uint64_t mask, double a, double b) {
     return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
+// RoomBounds::distance(w, x, r) >= 0 for every wall w, written out so that it vectorises.
+inline bool clear_of_walls(const RoomBounds& room, const Vec3& x, double r) {
+    return (x.x - (room.lo.x + r) >= 0.0) & ((room.hi.x - r) - x.x >= 0.0) & (x.y - (room.lo.y + r) >= 0.0) &
+           ((room.hi.y - r) - x.y >= 0.0) & (x.z - (room.lo.z + r) >= 0.0) & ((room.hi.z - r) - x.z >= 0.0);
+}
+
 // The one of a, b, c (d, e, f) whose mask is all ones; exactly one mask is.
 inline double select3(std::uint64_t ma, double a, std::uint64_t mb, double b, std::uint64_t mc, double c) {
     return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & ma) | (std::bit_cast<std::uint64_t>(b) & mb) |
@@ -346,28 +352,10 @@ private:
                 route[q] = s_.frozen[i] ? 2 : walls == 0 ? 0 : std::has_single_bit(walls) ? 1 : 2;
                 const std::size_t p = identical_ ? 0 : i;
                 if (route[q] == 0) {
-                    lanes.x[k] = s_.x[i];
-                    lanes.y[k] = s_.y[i];
-                    lanes.z[k] = s_.z[i];
-                    lanes.vx[k] = s_.vx[i];
-                    lanes.vy[k] = s_.vy[i];
-                    lanes.vz[k] = s_.vz[i];
-                    lanes.k[k] = s_.drag_k[p];
-                    lanes.re_scale[k] = s_.drag_re_scale[p];
-                    lanes.r[k] = s_.radius[p];
-                    ++k;
+                    gather(lanes, k++, i, p);
                 } else if (route[q] == 1) {
-                    sliding.x[m] = s_.x[i];
-                    sliding.y[m] = s_.y[i];
-                    sliding.z[m] = s_.z[i];
-                    sliding.vx[m] = s_.vx[i];
-                    sliding.vy[m] = s_.vy[i];
-                    sliding.vz[m] = s_.vz[i];
-                    sliding.k[m] = s_.drag_k[p];
-                    sliding.re_scale[m] = s_.drag_re_scale[p];
-                    sliding.r[m] = s_.radius[p];
                     sliding.wall[m] = std::countr_zero(walls);
-                    ++m;
+                    gather(sliding, m++, i, p);
                 }
             }
             bounce_lanes(lanes, k);
@@ -383,6 +371,20 @@ private:
             for (std::size_t q = 0; q < n; ++q)
                 if (!single_bounce(pending_[q])) step_generic(pending_[q]);
         }
+    }
+
+    // Particle i's state into lane j; p is whose mass, radius and drag constants it has.
+    template <class Lanes>
+    void gather(Lanes& L, std::size_t j, std::uint32_t i, std::size_t p) const {
+        L.x[j] = s_.x[i];
+        L.y[j] = s_.y[i];
+        L.z[j] = s_.z[i];
+        L.vx[j] = s_.vx[i];
+        L.vy[j] = s_.vy[i];
+        L.vz[j] = s_.vz[i];
+        L.k[j] = s_.drag_k[p];
+        L.re_scale[j] = s_.drag_re_scale[p];
+        L.r[j] = s_.radius[p];
     }
 
     // Flagged free particles of one batch, and what bounce_lanes made of them.
@@ -456,9 +458,7 @@ private:
             y.v = hit.v_out;
             const double speed_out = glm::length(y.v);
             const FlightState y_end = fixed_step<M>(y, t, remaining, f);
-            const bool end_inside = (y_end.x.x - (lo_x + r) >= 0.0) & ((hi_x - r) - y_end.x.x >= 0.0) &
-                                    (y_end.x.y - (lo_y + r) >= 0.0) & ((hi_y - r) - y_end.x.y >= 0.0) &
-                                    (y_end.x.z - (lo_z + r) >= 0.0) & ((hi_z - r) - y_end.x.z >= 0.0);
+            const bool end_inside = clear_of_walls(room, y_end.x, r);
             const bool go_on = remaining > 0.0;
             const double ox = go_on ? y_end.x.x : y.x.x, oy = go_on ? y_end.x.y : y.x.y;
             const double oz = go_on ? y_end.x.z : y.x.z, ovx = go_on ? y_end.v.x : y.v.x;
@@ -501,8 +501,6 @@ private:
     // comes to a stop (an event) or slides into another wall; the generic path takes those.
     void slide_lanes(SlideLanes& L, std::size_t n) const {
         const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
-        const double lo_x = room_.lo.x, lo_y = room_.lo.y, lo_z = room_.lo.z;
-        const double hi_x = room_.hi.x, hi_y = room_.hi.y, hi_z = room_.hi.z;
         const RoomBounds room = room_;
         const double friction = m_.contact.friction;
         const double t0 = t0_, h = h_;
@@ -538,9 +536,7 @@ private:
             const double drag_loss = 0.0 + h * d.drag_power;
             const bool still = (v_new.x == 0.0) & (v_new.y == 0.0) & (v_new.z == 0.0);
             const Vec3 end = x + h * v_new;
-            const bool end_inside = (end.x - (lo_x + r) >= 0.0) & ((hi_x - r) - end.x >= 0.0) &
-                                    (end.y - (lo_y + r) >= 0.0) & ((hi_y - r) - end.y >= 0.0) &
-                                    (end.z - (lo_z + r) >= 0.0) & ((hi_z - r) - end.z >= 0.0);
+            const bool end_inside = clear_of_walls(room, end, r);
             const Vec3 moved = room.clamp_inside(end, r);
             const Vec3 x_new(still ? x.x : moved.x, still ? x.y : moved.y, still ? x.z : moved.z);
             const bool finite = all_finite(x_new.x, x_new.y, x_new.z, v_new.x, v_new.y) &
