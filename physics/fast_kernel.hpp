@@ -10,8 +10,11 @@
 //       particle was free (not resting, not frozen), ends the step inside every wall and stays
 //       finite; otherwise the state is left untouched and the particle is flagged. Selects,
 //       not branches, so it vectorises when the forces do (no wind, drag none/linear/quadratic);
-//    2. contact: flagged particles are re-stepped from their untouched state by the generic
-//       ParticleStepper (time of impact, resting contact, events, energy ledger, freezing).
+//    2. contact: flagged particles wait in a batch (from several chunks, in particle order) and
+//       are re-stepped from their untouched state: a free particle crossing one wall, and one
+//       resting on one wall, in branch-free lanes that repeat ParticleStepper::advance's
+//       operations for those cases; everything else (corners, rests, stops, releases, wind,
+//       freezing) by the generic ParticleStepper itself.
 //    Methods without a fixed-step flight phase (adaptive Dormand-Prince, exponential) and the
 //    sphere correlation take phase 2 for every particle, still split across threads.
 #pragma once
