@@ -252,9 +252,12 @@ public:
         f_.gravity = m_.world.gravity;
         f_.wind = &sim.wind();
         if constexpr (M != Flight::none) {
-            F probe = f_;  // with the wind field: a step may look it up
-            fixed_step<M>(FlightState{}, t0_, h_, probe);
-            evals_per_step_ = probe.gravity_evals - f_.gravity_evals;
+            // Force evaluations of one fixed step and of one call (a step may look the wind up).
+            F step = f_, call = f_;
+            fixed_step<M>(FlightState{}, t0_, h_, step);
+            call(Vec3(0.0), Vec3(0.0), t0_);
+            per_step_ = {step.gravity_evals, step.drag_evals, step.wind_evals};
+            per_call_ = {call.gravity_evals, call.drag_evals, call.wind_evals};
         }
     }
 
@@ -285,15 +288,10 @@ public:
         ForceCounters& c = out_.counters;
         add_counts(c, f_, adaptive_, contact_solves_);
         c.fast_path += fast;
-        if (fast > 0) {
-            // Phase 1 evaluated the forces of every finished particle once per method stage.
-            F probe = f_;
-            probe.gravity_evals = probe.drag_evals = probe.wind_evals = 0;
-            fixed_step<M>(FlightState{}, t0_, h_, probe);
-            c.gravity += fast * probe.gravity_evals;
-            c.drag += fast * probe.drag_evals;
-            c.wind += fast * probe.wind_evals;
-        }
+        // Phase 1 evaluated the forces of every particle it finished once per method stage.
+        c.gravity += fast * per_step_.gravity;
+        c.drag += fast * per_step_.drag;
+        c.wind += fast * per_step_.wind;
     }
 
 private:
@@ -334,13 +332,14 @@ private:
         prefetch(&s_.dissipated_friction[i]);
     }
 
-    // Phase 2 for the pending particles, in order: free particles of methods whose position is
-    // a polynomial in the step (no wind) go through bounce_lanes, eight at a time; the ones it
-    // cannot finish, and every other flagged particle, through the scalar paths.
+    // Phase 2 for the pending particles, in order: for methods whose position is a polynomial in
+    // the step, free particles go through bounce_lanes and particles resting on one wall through
+    // slide_lanes; the ones these cannot finish, and every other flagged particle, through the
+    // generic stepper.
     void contact_phase() {
         const std::size_t n = pending_count_;
         pending_count_ = 0;
-        if constexpr (has_polynomial_position(method_of(M)) && !HasWind) {
+        if constexpr (has_polynomial_position(method_of(M))) {
             // Which lanes each pending particle goes to: 0 bounce, 1 slide, 2 scalar.
             std::uint8_t route[contact_batch + fast_chunk];
             BounceLanes lanes;
@@ -368,8 +367,7 @@ private:
                 else step_generic(i);
             }
         } else {
-            for (std::size_t q = 0; q < n; ++q)
-                if (!single_bounce(pending_[q])) step_generic(pending_[q]);
+            for (std::size_t q = 0; q < n; ++q) step_generic(pending_[q]);
         }
     }
 
@@ -392,19 +390,21 @@ private:
         static constexpr std::size_t capacity = contact_batch + fast_chunk;
         double x[capacity], y[capacity], z[capacity], vx[capacity], vy[capacity], vz[capacity];
         double k[capacity], re_scale[capacity], r[capacity];
-        double drag_loss[capacity], bounce_loss[capacity], friction_loss[capacity];
+        double drag_loss[capacity], wind_gain[capacity], bounce_loss[capacity], friction_loss[capacity];
         double t[capacity], speed_in[capacity], speed_out[capacity];
         std::int64_t wall[capacity], ok[capacity], notify[capacity], flights[capacity];
     };
 
-    // single_bounce for lanes [0, n) without branches, so that it vectorises: every case is
-    // computed and selected, the wall and its axis are picked by selects instead of indexing.
-    // ok[j] says the particle took the single-bounce course; the others are left untouched for
-    // the generic path. The same operations in the same order as single_bounce (and so as
-    // ParticleStepper::advance); fast_kernel_test checks the bits.
+    // ParticleStepper::advance for a free particle whose step crosses exactly one wall, that
+    // rebounds faster than rest_speed and finishes the step without reaching another wall, for
+    // lanes [0, n) without branches, so that it can vectorise (without wind): every case is
+    // computed and selected, the wall and its axis are picked by masks instead of indexing.
+    // ok[j] says the particle took that course; the others are left untouched for the generic
+    // path. The same operations in the same order as advance; fast_kernel_test checks the bits.
     void bounce_lanes(BounceLanes& L, std::size_t n) const {
         constexpr double kappa = position_kappa(method_of(M));
         const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
+        const WindField* const wind = f_.wind;
         const double lo_x = room_.lo.x, lo_y = room_.lo.y, lo_z = room_.lo.z;
         const double hi_x = room_.hi.x, hi_y = room_.hi.y, hi_z = room_.hi.z;
         const RoomBounds room = room_;
@@ -412,8 +412,8 @@ private:
         const double t0 = t0_, h = h_;
 #pragma GCC ivdep
         for (std::size_t j = 0; j < n; ++j) {
-            Forces<Drag, false> f;
-            set_forces(f, gx, gy, gz, nullptr, L.k[j], L.re_scale[j], 0.0, 0.0, 0.0);
+            F f;
+            set_forces(f, gx, gy, gz, wind, L.k[j], L.re_scale[j], 0.0, 0.0, 0.0);
             const double r = L.r[j];
             FlightState y0;
             y0.x = Vec3(L.x[j], L.y[j], L.z[j]);
@@ -475,6 +475,7 @@ private:
             L.vy[j] = ovy;
             L.vz[j] = ovz;
             L.drag_loss[j] = loss;
+            L.wind_gain[j] = gain;
             L.bounce_loss[j] = 0.0 + hit.bounce_loss_per_kg;
             L.friction_loss[j] = 0.0 + hit.friction_loss_per_kg;
             L.t[j] = t;
@@ -491,7 +492,7 @@ private:
         static constexpr std::size_t capacity = contact_batch + fast_chunk;
         double x[capacity], y[capacity], z[capacity], vx[capacity], vy[capacity], vz[capacity];
         double k[capacity], re_scale[capacity], r[capacity];
-        double drag_loss[capacity], friction_loss[capacity];
+        double drag_loss[capacity], wind_gain[capacity], friction_loss[capacity];
         std::int64_t wall[capacity], ok[capacity];
     };
 
@@ -501,13 +502,14 @@ private:
     // comes to a stop (an event) or slides into another wall; the generic path takes those.
     void slide_lanes(SlideLanes& L, std::size_t n) const {
         const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
+        const WindField* const wind = f_.wind;
         const RoomBounds room = room_;
         const double friction = m_.contact.friction;
         const double t0 = t0_, h = h_;
 #pragma GCC ivdep
         for (std::size_t j = 0; j < n; ++j) {
-            Forces<Drag, false> f;
-            set_forces(f, gx, gy, gz, nullptr, L.k[j], L.re_scale[j], 0.0, 0.0, 0.0);
+            F f;
+            set_forces(f, gx, gy, gz, wind, L.k[j], L.re_scale[j], 0.0, 0.0, 0.0);
             const double r = L.r[j];
             const std::int64_t wall = L.wall[j];
             const std::uint64_t ax = wall < 2 ? ~std::uint64_t{0} : 0;
@@ -534,13 +536,14 @@ private:
             const Vec3 v_new(stuck ? 0.0 : v_free.x * keep, stuck ? 0.0 : v_free.y * keep, stuck ? 0.0 : v_free.z * keep);
             const double friction_loss = 0.0 + 0.5 * (speed * speed - glm::dot(v_new, v_new));
             const double drag_loss = 0.0 + h * d.drag_power;
+            const double wind_gain = 0.0 + h * d.wind_power;
             const bool still = (v_new.x == 0.0) & (v_new.y == 0.0) & (v_new.z == 0.0);
             const Vec3 end = x + h * v_new;
             const bool end_inside = clear_of_walls(room, end, r);
             const Vec3 moved = room.clamp_inside(end, r);
             const Vec3 x_new(still ? x.x : moved.x, still ? x.y : moved.y, still ? x.z : moved.z);
             const bool finite = all_finite(x_new.x, x_new.y, x_new.z, v_new.x, v_new.y) &
-                                all_finite(v_new.z, drag_loss, friction_loss, 0.0, 0.0);
+                                all_finite(v_new.z, drag_loss, wind_gain, friction_loss, 0.0);
             L.ok[j] = !released & !(was_moving & still) & (still | end_inside) & finite;
             L.x[j] = x_new.x;
             L.y[j] = x_new.y;
@@ -549,28 +552,28 @@ private:
             L.vy[j] = v_new.y;
             L.vz[j] = v_new.z;
             L.drag_loss[j] = drag_loss;
+            L.wind_gain[j] = wind_gain;
             L.friction_loss[j] = friction_loss;
         }
     }
 
     // Writes lane j's slide back to particle i (it keeps resting on its wall).
     void commit_slide(const SlideLanes& L, std::size_t j, std::uint32_t i) {
-        ++f_.gravity_evals;
-        if constexpr (Drag != DragModel::none) ++f_.drag_evals;
+        count_evals(per_call_, 1);
         ParticleStep p;
         p.y.x = Vec3(L.x[j], L.y[j], L.z[j]);
         p.y.v = Vec3(L.vx[j], L.vy[j], L.vz[j]);
         p.y.drag_loss = L.drag_loss[j];
+        p.y.wind_gain = L.wind_gain[j];
         p.resting = s_.resting[i];
         p.friction_loss = L.friction_loss[j];
         store_step<Drag, HasWind>(s_, i, p, nullptr, s_.mass[identical_ ? 0 : i]);
     }
 
-    // Writes lane j's bounce back to particle i, as single_bounce does.
+    // Writes lane j's bounce back to particle i, as ParticleStepper::advance would have.
     void commit_bounce(const BounceLanes& L, std::size_t j, std::uint32_t i) {
-        const std::uint64_t calls = evals_per_step_ * static_cast<std::uint64_t>(L.flights[j]) + 1;  // + a0
-        f_.gravity_evals += calls;
-        if constexpr (Drag != DragModel::none) f_.drag_evals += calls;
+        count_evals(per_step_, static_cast<std::uint64_t>(L.flights[j]));
+        count_evals(per_call_, 1);  // the acceleration at the step start, for the time of impact
         ++contact_solves_;
         if (L.notify[j])
             out_.events->push_back(
@@ -579,78 +582,20 @@ private:
         p.y.x = Vec3(L.x[j], L.y[j], L.z[j]);
         p.y.v = Vec3(L.vx[j], L.vy[j], L.vz[j]);
         p.y.drag_loss = L.drag_loss[j];
+        p.y.wind_gain = L.wind_gain[j];
         p.resting = 0;
         p.bounce_loss = L.bounce_loss[j];
         p.friction_loss = L.friction_loss[j];
         store_step<Drag, HasWind>(s_, i, p, nullptr, s_.mass[identical_ ? 0 : i]);
     }
 
-    // The common contact, straight through: a free particle whose step crosses exactly one wall,
-    // rebounds faster than rest_speed and finishes the step without reaching another wall. These
-    // are ParticleStepper::advance's operations for that case, in its order, without its loops
-    // and searches (fast_kernel_test checks the bits). Any other case returns false with nothing
-    // written and the force counters restored, and the generic path takes the particle.
-    bool single_bounce(std::size_t i) {
-        constexpr Method method = method_of(M);
-        if constexpr (!has_polynomial_position(method)) {
-            return false;
-        } else {
-            if (s_.resting[i] | s_.frozen[i]) return false;
-            const F saved = f_;
-            const std::size_t q = identical_ ? 0 : i;  // whose mass, radius and drag constants
-            f_.drag = {s_.drag_k[q], s_.drag_re_scale[q]};
-            const double r = s_.radius[q];
-            FlightState y0;
-            y0.x = s_.position(i);
-            y0.v = s_.velocity(i);
-            const FlightState end = fixed_step<M>(y0, t0_, h_, f_);
-            int crossed = 0, wall = 0;
-            for (int w = 0; w < wall_count; ++w) {
-                const bool c = !(room_.distance(w, end.x, r) >= 0.0);
-                crossed += c;
-                wall = c ? w : wall;
-            }
-            if (crossed != 1) return restore(saved);
-            const Vec3 a0 = f_(y0.x, y0.v, t0_).a;
-            const double s_hit = polynomial_time_of_impact(room_, wall, y0, r, position_kappa(method), a0, h_);
-            FlightState y = s_hit > 0.0 ? fixed_step<M>(y0, t0_, s_hit, f_) : y0;
-            y.x[RoomBounds::axis(wall)] = room_.contact_plane(wall, r);
-            y.x = room_.clamp_inside(y.x, r);
-            const double t = t0_ + s_hit, remaining = h_ - s_hit;
-            const double speed_in = glm::length(y.v);
-            const ImpactResult hit = impact(y.v, RoomBounds::inward_normal(wall), m_.contact);
-            if (hit.normal_speed_out < m_.contact.rest_speed) return restore(saved);
-            y.v = hit.v_out;
-            const double speed_out = glm::length(y.v);
-            if (remaining > 0.0) {
-                const FlightState y_end = fixed_step<M>(y, t, remaining, f_);
-                for (int w = 0; w < wall_count; ++w)
-                    if (!(room_.distance(w, y_end.x, r) >= 0.0)) return restore(saved);
-                y = y_end;
-            }
-            if (!is_finite(y)) return restore(saved);
-            ++contact_solves_;
-            if (hit.normal_speed_in > 0.0)
-                out_.events->push_back({t, static_cast<std::uint32_t>(i), static_cast<std::int8_t>(wall),
-                                        EventKind::bounce, speed_in, speed_out});
-            ParticleStep p;
-            p.y = y;
-            p.resting = 0;
-            p.bounce_loss = 0.0 + hit.bounce_loss_per_kg;
-            p.friction_loss = 0.0 + hit.friction_loss_per_kg;
-            store_step<Drag, HasWind>(s_, i, p, nullptr, s_.mass[q]);
-            return true;
-        }
+    // Adds `times` evaluations of the kind `per` counts to the functor's counters, as if the
+    // lanes had evaluated the forces through it.
+    void count_evals(const ForceCounters& per, std::uint64_t times) {
+        f_.gravity_evals += times * per.gravity;
+        f_.drag_evals += times * per.drag;
+        f_.wind_evals += times * per.wind;
     }
-
-    // Undoes single_bounce's force evaluations (the generic path counts its own).
-    bool restore(const F& saved) {
-        f_.gravity_evals = saved.gravity_evals;
-        f_.drag_evals = saved.drag_evals;
-        f_.wind_evals = saved.wind_evals;
-        return false;
-    }
-
 
     // The generic kernel's per-particle body (simulation.cpp, step_kernel), operation for operation.
     void step_generic(std::size_t i) {
@@ -680,7 +625,7 @@ private:
     const bool from_memory_;
     std::uint32_t pending_[contact_batch + fast_chunk];  // flagged particles waiting for phase 2
     std::size_t pending_count_ = 0;
-    std::uint64_t evals_per_step_ = 0;                   // force evaluations in one fixed step
+    ForceCounters per_step_, per_call_;                  // force evaluations in one step, one call
     AdaptiveStats adaptive_;
     std::uint64_t contact_solves_ = 0;
     F f_;

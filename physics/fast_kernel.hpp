@@ -13,7 +13,7 @@
 //    2. contact: flagged particles wait in a batch (from several chunks, in particle order) and
 //       are re-stepped from their untouched state: a free particle crossing one wall, and one
 //       resting on one wall, in branch-free lanes that repeat ParticleStepper::advance's
-//       operations for those cases; everything else (corners, rests, stops, releases, wind,
+//       operations for those cases; everything else (corners, rests, stops, releases,
 //       freezing) by the generic ParticleStepper itself.
 //    Methods without a fixed-step flight phase (adaptive Dormand-Prince, exponential) and the
 //    sphere correlation take phase 2 for every particle, still split across threads.
