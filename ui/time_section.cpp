@@ -1,4 +1,5 @@
 #include "ui/frame_recorder.hpp"
+#include "ui/launch_angles.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/scene_editor.hpp"
 #include "ui/sections.hpp"
@@ -10,19 +11,15 @@
 namespace pl::ui {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-constexpr double max_launch_speed_mps = 1e3;
-
 void velocity_to_launch(const Vec3& v, PanelState& p) {
-    p.launch_speed = glm::length(v);
-    const double horizontal = std::hypot(v.x, v.z);
-    p.launch_elevation_deg = p.launch_speed > 0.0 ? std::atan2(v.y, horizontal) * 180.0 / pi : 45.0;
-    p.launch_azimuth_deg = horizontal > 0.0 ? std::atan2(v.z, v.x) * 180.0 / pi : 0.0;
+    const LaunchPolar polar = launch_polar(v);
+    p.launch_speed = polar.speed_mps;
+    p.launch_elevation_deg = polar.speed_mps > 0.0 ? polar.elevation_deg : 45.0;  // a throw, once a speed is set
+    p.launch_azimuth_deg = polar.azimuth_deg;
 }
 
 Vec3 launch_to_velocity(const PanelState& p) {
-    const double el = p.launch_elevation_deg * pi / 180.0, az = p.launch_azimuth_deg * pi / 180.0;
-    return p.launch_speed * Vec3(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
+    return launch_velocity({p.launch_speed, p.launch_elevation_deg, p.launch_azimuth_deg});
 }
 
 }  // namespace

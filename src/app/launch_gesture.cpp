@@ -16,7 +16,6 @@ namespace pl::app {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 const glm::vec4 aim_color(1.0f, 0.80f, 0.30f, 1.0f);
 const glm::vec4 shadow_color(1.0f, 0.80f, 0.30f, 0.35f);
 
@@ -40,7 +39,7 @@ void draw_segments(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane, 
 // Speed, elevation and azimuth in a dark box beside the cursor, kept inside the pane. It goes on
 // the far side of the cursor from the particle (`anchor`, on screen), so it does not cover the arrow.
 void draw_readout(ImDrawList* dl, const Rect& pane, const LaunchAim& aim, double arrow_time_s, ImVec2 anchor) {
-    const LaunchPolar p = launch_polar(aim.velocity);
+    const ui::LaunchPolar p = ui::launch_polar(aim.velocity);
     const std::string text = fmt::format(
         "{:.3g} m/s{}\nelevation {:.1f}\u00b0\nazimuth {:.1f}\u00b0\narrow: straight path in {:.2g} s\nrelease: launch   Esc / right-click: cancel",
         p.speed_mps, aim.clamped ? " (max)" : "", p.elevation_deg, p.azimuth_deg, arrow_time_s);
@@ -64,15 +63,6 @@ void draw_readout(ImDrawList* dl, const Rect& pane, const LaunchAim& aim, double
 
 }  // namespace
 
-LaunchPolar launch_polar(const Vec3& v) {
-    LaunchPolar p;
-    p.speed_mps = glm::length(v);
-    const double horizontal = std::hypot(v.x, v.z);
-    p.elevation_deg = p.speed_mps > 0.0 ? std::atan2(v.y, horizontal) * 180.0 / pi : 0.0;
-    p.azimuth_deg = horizontal > 0.0 ? std::atan2(v.z, v.x) * 180.0 / pi : 0.0;
-    return p;
-}
-
 double aim_arrow_time_s(const Room& room) {
     constexpr double reference_speed_mps = 10.0;
     const double raw = std::max({room.size.x, room.size.y, room.size.z}) / reference_speed_mps;
@@ -95,8 +85,8 @@ std::optional<Vec3> aim_velocity(const OrbitCamera& camera, const Rect& pane, fl
     if (!(along > 0.0)) return std::nullopt;
     Vec3 velocity = (origin + along * direction - anchor) / arrow_time_s;
     const double speed = glm::length(velocity);
-    clamped = speed > max_aim_speed_mps;
-    if (clamped) velocity *= max_aim_speed_mps / speed;
+    clamped = speed > ui::max_launch_speed_mps;
+    if (clamped) velocity *= ui::max_launch_speed_mps / speed;
     return velocity;
 }
 
@@ -153,7 +143,7 @@ void finish_launch_aim(LaunchAim& aim, ui::LabSession& s) {
     ui::kick_particle(s, aim.particle, aim.velocity);
     s.launch_velocity = aim.velocity;
     ui::panels_of(s).launch_from_velocity = true;  // the Launch section shows the aimed speed and angles
-    const LaunchPolar p = launch_polar(aim.velocity);
+    const ui::LaunchPolar p = ui::launch_polar(aim.velocity);
     s.status_message = fmt::format("Launched particle {} at {:.3g} m/s, elevation {:.1f}\u00b0, azimuth {:.1f}\u00b0", aim.particle,
                                    p.speed_mps, p.elevation_deg, p.azimuth_deg);
 }

@@ -9,14 +9,12 @@
 #include "app/camera.hpp"
 #include "app/view_panes.hpp"
 #include "ui/lab_session.hpp"
+#include "ui/launch_angles.hpp"
 
 #include <optional>
 #include <vector>
 
 namespace pl::app {
-
-// The Launch section's speed range: an aim never asks for more.
-constexpr double max_aim_speed_mps = 1e3;
 
 struct LaunchAim {
     bool active = false;
@@ -24,23 +22,16 @@ struct LaunchAim {
     std::size_t variant = 0;        // the particle the arrow starts from
     std::size_t particle = 0;
     Vec3 velocity{0.0};             // what a release now would launch with
-    bool clamped = false;           // the drag asked for more than max_aim_speed_mps
+    bool clamped = false;           // the drag asked for more than ui::max_launch_speed_mps
     float cursor_x = 0.0f, cursor_y = 0.0f;
 };
-
-// Speed and direction in the Launch section's terms: elevation above the horizontal plane,
-// azimuth from +x towards +z (degrees).
-struct LaunchPolar {
-    double speed_mps = 0.0, elevation_deg = 0.0, azimuth_deg = 0.0;
-};
-LaunchPolar launch_polar(const Vec3& velocity);
 
 // The 1-2-5 time (s) at or below the room's largest size / 10 m/s: a throw at 10 m/s draws an
 // arrow as long as the room whatever its scale.
 double aim_arrow_time_s(const Room& room);
 
 // The velocity that carries a particle at `anchor` to the cursor's point on the plane through
-// `anchor` facing the camera in `arrow_time_s`, clamped to max_aim_speed_mps (`clamped` says so).
+// `anchor` facing the camera in `arrow_time_s`, clamped to ui::max_launch_speed_mps (`clamped` says so).
 // Empty when the cursor ray misses that plane.
 std::optional<Vec3> aim_velocity(const OrbitCamera& camera, const Rect& pane, float mouse_x, float mouse_y,
                                  const Vec3& anchor, double arrow_time_s, bool& clamped);

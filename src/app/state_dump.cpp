@@ -53,7 +53,7 @@ nlohmann::json aim_json(const ui::LabSession& s, const ViewSnapshot& view) {
         if (auto p = project(cam, r, glm::vec3(x))) return nlohmann::json::array({p->x, p->y});
         return nullptr;
     };
-    const LaunchPolar p = launch_polar(aim.velocity);
+    const ui::LaunchPolar p = ui::launch_polar(aim.velocity);
     return {{"variant", aim.variant},
             {"particle", aim.particle},
             {"velocity", vec3(aim.velocity)},
