@@ -9,6 +9,7 @@
 #include <bit>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 
 namespace pl {
@@ -113,6 +114,21 @@ inline double pick(std::uint64_t mask, double a, double b) {
     return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
+// c ? a : b for lanes; GCC if-converts this where it leaves some ternaries as branches.
+inline double when(bool c, double a, double b) { return pick(std::uint64_t{0} - c, a, b); }
+
+// RoomBounds::clamp_inside, written out so that it vectorises: glm::clamp per axis is
+// min(max(x, l), h) with glm's max(x, l) = x < l ? l : x and min(m, h) = h < m ? h : m.
+inline double clamp_axis(double x, double lo, double hi, double r) {
+    const double l = lo + r, h = hi - r;
+    const double up = when(x < l, l, x);
+    return when(l <= h, when(h < up, h, up), 0.5 * (lo + hi));
+}
+inline Vec3 clamp_inside(const RoomBounds& room, const Vec3& x, double r) {
+    return Vec3(clamp_axis(x.x, room.lo.x, room.hi.x, r), clamp_axis(x.y, room.lo.y, room.hi.y, r),
+                clamp_axis(x.z, room.lo.z, room.hi.z, r));
+}
+
 // RoomBounds::distance(w, x, r) >= 0 for every wall w, written out so that it vectorises.
 inline bool clear_of_walls(const RoomBounds& room, const Vec3& x, double r) {
     return (x.x - (room.lo.x + r) >= 0.0) & ((room.hi.x - r) - x.x >= 0.0) & (x.y - (room.lo.y + r) >= 0.0) &
@@ -149,7 +165,7 @@ void blocked_lanes(const ParticleState& s, std::size_t begin, std::size_t end, L
 // bench/RESULTS.md): masked stores are faster while the state is in cache, whole vectors when it
 // streams from memory (about +10% at 1e6 particles, -13% at 1e4).
 template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVectors>
-[[gnu::flatten]] std::size_t flight_chunk(ParticleState& s, std::size_t begin, std::size_t end,
+[[gnu::flatten, gnu::noinline]] std::size_t flight_chunk(ParticleState& s, std::size_t begin, std::size_t end,
                                           const Forces<Drag, HasWind>& forces, const RoomBounds& room, double t0,
                                           double h, const LaneMask* blocked, LaneMask* flagged) {
     // Local copies the stores below provably cannot alias.
@@ -202,7 +218,7 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
         // same decision. It also implies a finite position, so only the rest is checked below.
         const bool inside = (y1.x.x >= lo_x + r) & (y1.x.x <= hi_x - r) & (y1.x.y >= lo_y + r) &
                             (y1.x.y <= hi_y - r) & (y1.x.z >= lo_z + r) & (y1.x.z <= hi_z - r);
-        const bool finite = all_finite(y1.v.x, y1.v.y, y1.v.z, y1.drag_loss, y1.wind_gain);
+        const bool finite = M == Flight::semi_implicit_euler ? std::abs(y1.drag_loss) + std::abs(y1.wind_gain) <= DBL_MAX : all_finite(y1.v.x, y1.v.y, y1.v.z, y1.drag_loss, y1.wind_gain);
         const bool take = inside & finite & (blocked[i - begin] == 0);
         if constexpr (WholeVectors) {
             const std::uint64_t keep_new = take ? ~std::uint64_t{0} : 0;
@@ -295,20 +311,21 @@ public:
     }
 
 private:
-    // Calls f(particle) for the flagged particles of a chunk, in order, eight flags at a time.
+    // Calls f(particle) for the flagged particles of a chunk, in order. The flags are narrowed
+    // to bytes first (a loop that vectorises), then looked at eight bytes per word: a chunk
+    // usually has none or one or two flagged particles, and a scan flag by flag cost about
+    // half a cycle per particle.
     template <class Fn>
     static void for_each_flagged(std::size_t c, std::size_t c_end, const LaneMask* flagged, const Fn& f) {
         const std::size_t n = c_end - c;
-        std::size_t k = 0;
-        for (; k + 8 <= n; k += 8) {
-            const LaneMask any = flagged[k] | flagged[k + 1] | flagged[k + 2] | flagged[k + 3] | flagged[k + 4] |
-                                 flagged[k + 5] | flagged[k + 6] | flagged[k + 7];
-            if (!any) continue;
-            for (std::size_t j = k; j < k + 8; ++j)
-                if (flagged[j]) f(c + j);
+        alignas(64) std::uint8_t bytes[fast_chunk];
+        for (std::size_t j = 0; j < n; ++j) bytes[j] = static_cast<std::uint8_t>(flagged[j]);
+        for (std::size_t j = n; j % 8 != 0; ++j) bytes[j] = 0;
+        for (std::size_t k = 0; k < n; k += 8) {
+            std::uint64_t word;
+            std::memcpy(&word, bytes + k, sizeof word);
+            for (; word != 0; word &= word - 1) f(c + k + static_cast<std::size_t>(std::countr_zero(word)) / 8);
         }
-        for (; k < n; ++k)
-            if (flagged[k]) f(c + k);
     }
 
     std::size_t flight(std::size_t c, std::size_t c_end, const LaneMask* blocked, LaneMask* flags) {
@@ -423,7 +440,9 @@ private:
             const bool c2 = !(end.x.y - (lo_y + r) >= 0.0), c3 = !((hi_y - r) - end.x.y >= 0.0);
             const bool c4 = !(end.x.z - (lo_z + r) >= 0.0), c5 = !((hi_z - r) - end.x.z >= 0.0);
             const int crossed = c0 + c1 + c2 + c3 + c4 + c5;
-            const std::int64_t wall = c5 ? 5 : c4 ? 4 : c3 ? 3 : c2 ? 2 : c1 ? 1 : 0;
+            // The highest crossed wall, as the generic stepper picks it (c5 ? 5 : c4 ? 4 : ... : 0).
+            const std::int64_t wall = std::max(std::max(std::max(std::int64_t{c1}, std::int64_t{c2} * 2), std::int64_t{c3} * 3),
+                                               std::max(std::int64_t{c4} * 4, std::int64_t{c5} * 5));
             const bool is_max = (wall & 1) != 0;
             const Vec3 a0 = f(y0.x, y0.v, t0).a;
             // Selections by wall and axis as bit masks (exact, and they vectorise where a chain
@@ -441,14 +460,14 @@ private:
             const FlightState part = fixed_step<M>(y0, t0, s_hit, f);
             const bool moved = s_hit > 0.0;
             FlightState y;
-            y.x = Vec3(moved ? part.x.x : y0.x.x, moved ? part.x.y : y0.x.y, moved ? part.x.z : y0.x.z);
-            y.v = Vec3(moved ? part.v.x : y0.v.x, moved ? part.v.y : y0.v.y, moved ? part.v.z : y0.v.z);
-            y.drag_loss = moved ? part.drag_loss : y0.drag_loss;
-            y.wind_gain = moved ? part.wind_gain : y0.wind_gain;
+            y.x = Vec3(when(moved, part.x.x, y0.x.x), when(moved, part.x.y, y0.x.y), when(moved, part.x.z, y0.x.z));
+            y.v = Vec3(when(moved, part.v.x, y0.v.x), when(moved, part.v.y, y0.v.y), when(moved, part.v.z, y0.v.z));
+            y.drag_loss = when(moved, part.drag_loss, y0.drag_loss);
+            y.wind_gain = when(moved, part.wind_gain, y0.wind_gain);
             const double plane =
                 select6(w0, lo_x + r, w1, hi_x - r, w2, lo_y + r, w3, hi_y - r, w4, lo_z + r, w5, hi_z - r);
             y.x = Vec3(pick(ax, plane, y.x.x), pick(ay, plane, y.x.y), pick(az, plane, y.x.z));
-            y.x = room.clamp_inside(y.x, r);
+            y.x = clamp_inside(room, y.x, r);
             const double t = t0 + s_hit, remaining = h - s_hit;
             const double speed_in = glm::length(y.v);
             const double n_sign = is_max ? -1.0 : 1.0;
@@ -460,11 +479,11 @@ private:
             const FlightState y_end = fixed_step<M>(y, t, remaining, f);
             const bool end_inside = clear_of_walls(room, y_end.x, r);
             const bool go_on = remaining > 0.0;
-            const double ox = go_on ? y_end.x.x : y.x.x, oy = go_on ? y_end.x.y : y.x.y;
-            const double oz = go_on ? y_end.x.z : y.x.z, ovx = go_on ? y_end.v.x : y.v.x;
-            const double ovy = go_on ? y_end.v.y : y.v.y, ovz = go_on ? y_end.v.z : y.v.z;
-            const double loss = go_on ? y_end.drag_loss : y.drag_loss;
-            const double gain = go_on ? y_end.wind_gain : y.wind_gain;
+            const double ox = when(go_on, y_end.x.x, y.x.x), oy = when(go_on, y_end.x.y, y.x.y);
+            const double oz = when(go_on, y_end.x.z, y.x.z), ovx = when(go_on, y_end.v.x, y.v.x);
+            const double ovy = when(go_on, y_end.v.y, y.v.y), ovz = when(go_on, y_end.v.z, y.v.z);
+            const double loss = when(go_on, y_end.drag_loss, y.drag_loss);
+            const double gain = when(go_on, y_end.wind_gain, y.wind_gain);
             // Conservative: a finite state whose sum overflows goes to the generic path too.
             const bool finite = all_finite(ox, oy, oz, ovx, ovy) & all_finite(ovz, loss, gain, 0.0, 0.0);
             L.ok[j] = (crossed == 1) & !slow & (!go_on | end_inside) & finite;
@@ -533,15 +552,16 @@ private:
             const bool was_moving = (v.x != 0.0) | (v.y != 0.0) | (v.z != 0.0);
             const bool stuck = speed <= jump;
             const double keep = 1.0 - jump / speed;
-            const Vec3 v_new(stuck ? 0.0 : v_free.x * keep, stuck ? 0.0 : v_free.y * keep, stuck ? 0.0 : v_free.z * keep);
+            const Vec3 v_new(when(stuck, 0.0, v_free.x * keep), when(stuck, 0.0, v_free.y * keep),
+                             when(stuck, 0.0, v_free.z * keep));
             const double friction_loss = 0.0 + 0.5 * (speed * speed - glm::dot(v_new, v_new));
             const double drag_loss = 0.0 + h * d.drag_power;
             const double wind_gain = 0.0 + h * d.wind_power;
             const bool still = (v_new.x == 0.0) & (v_new.y == 0.0) & (v_new.z == 0.0);
             const Vec3 end = x + h * v_new;
             const bool end_inside = clear_of_walls(room, end, r);
-            const Vec3 moved = room.clamp_inside(end, r);
-            const Vec3 x_new(still ? x.x : moved.x, still ? x.y : moved.y, still ? x.z : moved.z);
+            const Vec3 moved = clamp_inside(room, end, r);
+            const Vec3 x_new(when(still, x.x, moved.x), when(still, x.y, moved.y), when(still, x.z, moved.z));
             const bool finite = all_finite(x_new.x, x_new.y, x_new.z, v_new.x, v_new.y) &
                                 all_finite(v_new.z, drag_loss, wind_gain, friction_loss, 0.0);
             L.ok[j] = !released & !(was_moving & still) & (still | end_inside) & finite;
