@@ -218,7 +218,11 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
         // same decision. It also implies a finite position, so only the rest is checked below.
         const bool inside = (y1.x.x >= lo_x + r) & (y1.x.x <= hi_x - r) & (y1.x.y >= lo_y + r) &
                             (y1.x.y <= hi_y - r) & (y1.x.z >= lo_z + r) & (y1.x.z <= hi_z - r);
-        const bool finite = M == Flight::semi_implicit_euler ? std::abs(y1.drag_loss) + std::abs(y1.wind_gain) <= DBL_MAX : all_finite(y1.v.x, y1.v.y, y1.v.z, y1.drag_loss, y1.wind_gain);
+        // Semi-implicit Euler moves by h * v1 (h > 0): an infinite or NaN v1 makes the position
+        // infinite or NaN, so `inside` already implies a finite velocity; the ledger is left.
+        const bool finite = M == Flight::semi_implicit_euler
+                                ? std::abs(y1.drag_loss) + std::abs(y1.wind_gain) <= DBL_MAX
+                                : all_finite(y1.v.x, y1.v.y, y1.v.z, y1.drag_loss, y1.wind_gain);
         const bool take = inside & finite & (blocked[i - begin] == 0);
         if constexpr (WholeVectors) {
             const std::uint64_t keep_new = take ? ~std::uint64_t{0} : 0;
@@ -418,7 +422,7 @@ private:
     // computed and selected, the wall and its axis are picked by masks instead of indexing.
     // ok[j] says the particle took that course; the others are left untouched for the generic
     // path. The same operations in the same order as advance; fast_kernel_test checks the bits.
-    void bounce_lanes(BounceLanes& L, std::size_t n) const {
+    [[gnu::flatten, gnu::noinline]] void bounce_lanes(BounceLanes& L, std::size_t n) const {
         constexpr double kappa = position_kappa(method_of(M));
         const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
         const WindField* const wind = f_.wind;
@@ -519,7 +523,7 @@ private:
     // sticks) and reaches no other wall in the step, without branches (see bounce_lanes): the
     // release test, then slide() for one wall. ok[j] is false where the particle is released,
     // comes to a stop (an event) or slides into another wall; the generic path takes those.
-    void slide_lanes(SlideLanes& L, std::size_t n) const {
+    [[gnu::flatten, gnu::noinline]] void slide_lanes(SlideLanes& L, std::size_t n) const {
         const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
         const WindField* const wind = f_.wind;
         const RoomBounds room = room_;
