@@ -150,12 +150,51 @@ inline double select6(std::uint64_t ma, double a, std::uint64_t mb, double b, st
 // take 64 particles per iteration (one vector of bytes), spilling the 8-wide double vectors.
 using LaneMask = std::int64_t;
 
-// Which particles of [begin, end) phase 1 must leave alone (resting or frozen).
-void blocked_lanes(const ParticleState& s, std::size_t begin, std::size_t end, LaneMask* blocked) {
-    const std::uint8_t* const resting = s.resting.data();
-    const std::uint8_t* const frozen = s.frozen.data();
-    for (std::size_t i = begin; i < end; ++i) blocked[i - begin] = (resting[i] | frozen[i]) != 0;
-}
+// Lane masks of the particles of a chunk that phase 1 must leave alone (resting or frozen).
+// They stay all zeros between chunks: only groups of 64 particles where a flag byte is set
+// (found by ORing the bytes eight at a time, a reduction that vectorises) are widened, and
+// cleared again after the chunk. In flight most groups have none, and widening every byte
+// cost more than the look.
+class HeldLanes {
+public:
+    static constexpr std::size_t group = 64;
+
+    const LaneMask* mark(const ParticleState& s, std::size_t begin, std::size_t end) {
+        const std::uint8_t* const resting = s.resting.data() + begin;
+        const std::uint8_t* const frozen = s.frozen.data() + begin;
+        const std::size_t n = end - begin;
+        for (std::size_t g = 0; g < n; g += group) {
+            const std::size_t len = std::min(group, n - g);
+            if (!any_set(resting + g, frozen + g, len)) continue;
+            for (std::size_t j = g; j < g + len; ++j) lanes_[j] = (resting[j] | frozen[j]) != 0;
+            widened_ |= std::uint32_t{1} << (g / group);
+        }
+        return lanes_;
+    }
+
+    void clear() {
+        for (; widened_ != 0; widened_ &= widened_ - 1)
+            std::fill_n(lanes_ + std::countr_zero(widened_) * group, group, LaneMask{0});
+    }
+
+private:
+    static bool any_set(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) {
+        std::uint64_t any = 0;
+        std::size_t i = 0;
+        for (; i + 8 <= n; i += 8) {
+            std::uint64_t wa, wb;
+            std::memcpy(&wa, a + i, sizeof wa);
+            std::memcpy(&wb, b + i, sizeof wb);
+            any |= wa | wb;
+        }
+        for (; i < n; ++i) any |= static_cast<std::uint64_t>(a[i] | b[i]);
+        return any != 0;
+    }
+
+    alignas(64) LaneMask lanes_[fast_chunk] = {};
+    std::uint32_t widened_ = 0;  // groups holding a non-zero mask
+};
+static_assert(fast_chunk / HeldLanes::group <= 32);
 
 // Phase 1 for particles [begin, end): see fast_kernel.hpp. Writes flagged[i - begin] and
 // returns the number of particles it finished. Identical: every particle has the mass, radius
@@ -290,11 +329,12 @@ public:
             // in a sparse scene), in particle order; meanwhile the memory it will read and
             // phase 1 did not is prefetched. Particles are independent and only phase 2 makes
             // events, so the results and the order of the events are the same.
-            LaneMask blocked[fast_chunk], flagged[fast_chunk];
+            HeldLanes held;
+            LaneMask flagged[fast_chunk];
             for (std::size_t c = begin; c < end; c += fast_chunk) {
                 const std::size_t c_end = std::min(end, c + fast_chunk);
-                blocked_lanes(s_, c, c_end, blocked);
-                const std::size_t finished = flight(c, c_end, blocked, flagged);
+                const std::size_t finished = flight(c, c_end, held.mark(s_, c, c_end), flagged);
+                held.clear();
                 fast += finished;
                 if (finished == c_end - c) continue;
                 for_each_flagged(c, c_end, flagged, [this](std::size_t i) {
@@ -315,20 +355,27 @@ public:
     }
 
 private:
-    // Calls f(particle) for the flagged particles of a chunk, in order. The flags are narrowed
-    // to bytes first (a loop that vectorises), then looked at eight bytes per word: a chunk
-    // usually has none or one or two flagged particles, and a scan flag by flag cost about
-    // half a cycle per particle.
+    // Calls f(particle) for the flagged particles of a chunk, in order. A chunk usually has
+    // none, one or two, and a look flag by flag cost about half a cycle per particle, so groups
+    // of 64 flags are ORed together first (a reduction that vectorises); a group with a flag is
+    // narrowed to bytes and read eight bytes per word.
     template <class Fn>
     static void for_each_flagged(std::size_t c, std::size_t c_end, const LaneMask* flagged, const Fn& f) {
+        constexpr std::size_t group = 64;
         const std::size_t n = c_end - c;
-        alignas(64) std::uint8_t bytes[fast_chunk];
-        for (std::size_t j = 0; j < n; ++j) bytes[j] = static_cast<std::uint8_t>(flagged[j]);
-        for (std::size_t j = n; j % 8 != 0; ++j) bytes[j] = 0;
-        for (std::size_t k = 0; k < n; k += 8) {
-            std::uint64_t word;
-            std::memcpy(&word, bytes + k, sizeof word);
-            for (; word != 0; word &= word - 1) f(c + k + static_cast<std::size_t>(std::countr_zero(word)) / 8);
+        for (std::size_t g = 0; g < n; g += group) {
+            const std::size_t len = std::min(group, n - g);
+            LaneMask any = 0;
+            for (std::size_t j = 0; j < len; ++j) any |= flagged[g + j];
+            if (any == 0) continue;
+            alignas(64) std::uint8_t bytes[group] = {};
+            for (std::size_t j = 0; j < len; ++j) bytes[j] = static_cast<std::uint8_t>(flagged[g + j]);
+            for (std::size_t k = 0; k < len; k += 8) {
+                std::uint64_t word;
+                std::memcpy(&word, bytes + k, sizeof word);
+                for (; word != 0; word &= word - 1)
+                    f(c + g + k + static_cast<std::size_t>(std::countr_zero(word)) / 8);
+            }
         }
     }
 
