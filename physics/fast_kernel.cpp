@@ -734,7 +734,17 @@ void fast_step_kernel(Simulation& sim) {
         merge(sim, out);
         return;
     }
-    std::vector<RangeOutput> outs(ranges);
+    // Kept from step to step (per calling thread), so that the ranges' event vectors keep their
+    // room instead of being allocated, grown and freed every step.
+    // (The reference: inside the task, a worker would name its own thread_local.)
+    static thread_local std::vector<RangeOutput> kept;
+    std::vector<RangeOutput>& outs = kept;
+    outs.resize(ranges);
+    for (RangeOutput& out : outs) {
+        out.own_events.clear();
+        out.frozen.clear();
+        out.counters = {};
+    }
     auto task = [&](std::size_t k) {
         RangeOutput& out = outs[k];
         out.events = &out.own_events;

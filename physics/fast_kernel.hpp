@@ -1,8 +1,9 @@
 // The production stepping kernel. Bit-identical to the generic one (simulation.cpp), faster:
 //  * threads: the particles are split into contiguous ranges run on the shared ThreadPool; each
 //    range collects its own events, which are appended in range order, so events, ledger and
-//    state are the same for any thread count. There are a few ranges per thread, taken in turn
-//    by whichever thread is free, so a thread the OS delays does not hold up the step;
+//    state are the same for any thread count. One range per thread, the same range every step
+//    (its data stays in that core's cache); a range a late worker has not started is taken by
+//    the caller (ThreadPool), so a thread the OS delays holds up the step by one range at most;
 //  * within a range, chunks of `fast_chunk` particles in two phases:
 //    1. flight: a branch-free loop over the structure-of-arrays state runs the scene's fixed-step
 //       method (the same integrators.hpp and forces.hpp code the generic path runs, so the same
@@ -28,7 +29,11 @@ namespace pl {
 constexpr std::size_t fast_chunk = 256;
 // Fewer particles than this per range are not worth a hand-over to another thread.
 constexpr std::size_t min_particles_per_range = 1024;
-constexpr std::size_t ranges_per_thread = 2;
+// Measured on the 2-vCPU development machine (bench/RESULTS.md): with two ranges per thread a
+// worker that wakes a microsecond late had one of its ranges taken by the caller every step,
+// whose data was then in the wrong core's cache: 1.12x on two threads at 1e4 particles; with
+// one, 1.8x.
+constexpr std::size_t ranges_per_thread = 1;
 // Above this many particles the state (about 140 bytes each, 37 MB here) streams from memory
 // rather than the caches, and phase 1 writes whole vectors (see flight_chunk). Measured: masked
 // stores still win at 1e5 particles, whole vectors at 1e6.
