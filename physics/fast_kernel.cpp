@@ -46,8 +46,10 @@ inline bool all_finite(double a, double b, double c, double d, double e) {
 }
 
 // What one range of particles produced besides its state: kept apart per range and merged in
-// range order, so the merged result does not depend on which thread ran which range.
-struct RangeOutput {
+// range order, so the merged result does not depend on which thread ran which range. On cache
+// lines of its own (two, for the adjacent-line prefetcher): its event vector grows while
+// another thread fills the next range's.
+struct alignas(128) RangeOutput {
     std::vector<Event>* events = nullptr;  // the simulation's sink when there is one range
     std::vector<Event> own_events;
     std::vector<std::uint32_t> frozen;  // particles frozen during this step, in order
