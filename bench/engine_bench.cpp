@@ -93,10 +93,14 @@ void register_engine_benchmarks() {
 
 void register_method_benchmarks() {
     for (Method m : {Method::explicit_euler, Method::semi_implicit_euler, Method::velocity_verlet, Method::rk4,
-                     Method::dopri5, Method::exponential})
-        for (std::size_t n : {std::size_t{1}, std::size_t{1000}, std::size_t{100000}})
-            register_engine(Workload::drag_walls, n, 1, m,
-                            std::string("method/") + to_string(m) + "/n:" + size_label(n));
+                     Method::dopri5, Method::exponential}) {
+        const std::string base = std::string("method/") + to_string(m) + "/n:";
+        register_engine(Workload::drag_walls, 1, 1, m, base + "1/threads:1");
+        for (std::size_t n : sizes)
+            for (int threads : thread_settings())
+                register_engine(Workload::drag_walls, n, threads, m,
+                                base + size_label(n) + "/threads:" + std::to_string(threads));
+    }
 }
 
 }  // namespace pl::bench

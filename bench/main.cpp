@@ -166,23 +166,25 @@ void print_gap(const CollectingReporter& r, int all_threads) {
     }
 }
 
-void print_workloads(const CollectingReporter& r, int all_threads) {
+// One row per name and size: the rate on one thread and on all of them, for the benchmarks
+// named prefix + name + "/n:" + size + "/threads:" + threads.
+void print_scaling(const CollectingReporter& r, int all_threads, const std::string& title, const char* column,
+                   const std::string& prefix, const std::vector<std::string>& names) {
+    auto base = [&](const std::string& name, std::size_t n) { return prefix + name + "/n:" + size_label(n) + "/threads:"; };
     bool any = false;
-    for (Workload w : {Workload::gravity, Workload::drag_walls, Workload::drag_walls_shear})
-        for (std::size_t n : sizes)
-            any = any || r.rate(std::string("engine/") + to_string(w) + "/n:" + size_label(n) + "/threads:1");
+    for (const std::string& name : names)
+        for (std::size_t n : sizes) any = any || r.rate(base(name, n) + "1");
     if (!any) return;
-    fmt::print("\n## Engine by workload (particle-steps/s; ns per particle-step, 1 thread)\n\n");
-    fmt::print("| workload | n | 1 thread | {} threads | speed-up | ns/particle-step |\n", all_threads);
+    fmt::print("\n## {}\n\n", title);
+    fmt::print("| {} | n | 1 thread | {} threads | speed-up | ns/particle-step |\n", column, all_threads);
     fmt::print("|---|---|---|---|---|---|\n");
-    for (Workload w : {Workload::gravity, Workload::drag_walls, Workload::drag_walls_shear})
+    for (const std::string& name : names)
         for (std::size_t n : sizes) {
-            const std::string base = std::string("engine/") + to_string(w) + "/n:" + size_label(n) + "/threads:";
-            const auto one = r.rate(base + "1");
-            const auto all = all_threads > 1 ? r.rate(base + std::to_string(all_threads)) : std::nullopt;
+            const auto one = r.rate(base(name, n) + "1");
+            const auto all = all_threads > 1 ? r.rate(base(name, n) + std::to_string(all_threads)) : std::nullopt;
             if (!one && !all) continue;
-            fmt::print("| {} | {} | {} | {} | {} | {} |\n", to_string(w), size_label(n), rate_text(one),
-                       rate_text(all), ratio_text(all, one, "x"), one ? fmt::format("{:.2f}", 1e9 / *one) : "-");
+            fmt::print("| {} | {} | {} | {} | {} | {} |\n", name, size_label(n), rate_text(one), rate_text(all),
+                       ratio_text(all, one, "x"), one ? fmt::format("{:.2f}", 1e9 / *one) : "-");
         }
 }
 
@@ -192,7 +194,8 @@ void print_methods(const CollectingReporter& r) {
     const std::size_t counts[] = {1, 1000, 100000};
     bool any = false;
     for (const char* m : methods)
-        for (std::size_t n : counts) any = any || r.rate(std::string("method/") + m + "/n:" + size_label(n));
+        for (std::size_t n : counts)
+            any = any || r.rate(std::string("method/") + m + "/n:" + size_label(n) + "/threads:1");
     if (!any) return;
     fmt::print("\n## Integrators on gravity + quadratic drag + walls: cost per particle-step "
                "(ns, 1 thread) and relative to semi-implicit Euler\n\n");
@@ -202,8 +205,8 @@ void print_methods(const CollectingReporter& r) {
         std::string cost[3], ratio[3];
         for (int k = 0; k < 3; ++k) {
             const std::string n = size_label(counts[k]);
-            const auto rate = r.rate(std::string("method/") + m + "/n:" + n);
-            const auto euler = r.rate("method/semi_implicit_euler/n:" + n);
+            const auto rate = r.rate(std::string("method/") + m + "/n:" + n + "/threads:1");
+            const auto euler = r.rate("method/semi_implicit_euler/n:" + n + "/threads:1");
             cost[k] = rate ? fmt::format("{:.1f}", 1e9 / *rate) : "-";
             ratio[k] = ratio_text(euler, rate);
         }
@@ -267,8 +270,14 @@ int main(int argc, char** argv) {
     const int all_threads = pl::hardware_threads();
     print_comparison(reporter, all_threads);
     print_gap(reporter, all_threads);
-    print_workloads(reporter, all_threads);
+    print_scaling(reporter, all_threads, "Engine by workload (particle-steps/s; ns per particle-step, 1 thread)",
+                  "workload", "engine/", {"gravity", "drag_walls", "drag_walls_shear"});
     print_methods(reporter);
+    print_scaling(reporter, all_threads,
+                  "Integrators by size (gravity + quadratic drag + walls; particle-steps/s; ns per particle-step, "
+                  "1 thread)",
+                  "method", "method/", {"explicit_euler", "semi_implicit_euler", "velocity_verlet", "rk4", "dopri5",
+                                        "exponential"});
     print_accuracy(reporter);
     benchmark::Shutdown();
     return 0;
