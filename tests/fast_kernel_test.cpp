@@ -169,6 +169,41 @@ TEST(FastKernel, NonFiniteParticlesFreezeExactlyAsInTheGenericKernel) {
     EXPECT_EQ(count_kind(p.generic.events(), EventKind::frozen), 2u);
 }
 
+// Rooms whose particles have come to rest: chunks with many resting particles slide them in
+// place (a vector pass) instead of through the contact lanes, for every method with a
+// closed-form position, with and without friction, wind and identical particles.
+TEST(FastKernel, RoomsAtRestStayBitIdentical) {
+    struct Case {
+        Method method;
+        DragModel drag;
+        WindKind wind;
+        bool identical;
+        double friction;
+    };
+    const Case cases[] = {
+        {Method::semi_implicit_euler, DragModel::quadratic, WindKind::none, true, 0.4},
+        {Method::semi_implicit_euler, DragModel::quadratic, WindKind::none, false, 0.0},
+        {Method::semi_implicit_euler, DragModel::linear, WindKind::constant, false, 0.3},
+        {Method::explicit_euler, DragModel::quadratic, WindKind::none, false, 0.5},
+        {Method::explicit_euler, DragModel::none, WindKind::none, true, 0.2},
+        {Method::velocity_verlet, DragModel::quadratic, WindKind::none, true, 0.3},
+        {Method::velocity_verlet, DragModel::sphere_re, WindKind::none, false, 0.3},
+    };
+    std::uint64_t seed = 900;
+    for (const Case& c : cases) {
+        Scenario s = random_scenario(++seed, c.method, c.drag, c.wind, 600, c.identical);
+        s.model.contact.friction = c.friction;
+        s.model.world.wind.velocity *= 0.05;  // a breeze that does not lift them
+        Pair p(s);
+        p.step_n(1500);
+        SCOPED_TRACE(std::string(to_string(c.method)) + " " + to_string(c.drag));
+        test::expect_identical(p.fast, p.generic);
+        std::size_t resting = 0;
+        for (std::uint8_t r : p.generic.state().resting) resting += r != 0;
+        EXPECT_GT(resting, 450u);  // most chunks are over the in-place threshold
+    }
+}
+
 TEST(FastKernel, KicksAndDrainedEventsStayIdentical) {
     Pair p(random_scenario(13, Method::semi_implicit_euler, DragModel::linear, WindKind::none, 120));
     p.step_n(500);  // most particles rest by now
