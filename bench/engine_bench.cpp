@@ -30,6 +30,10 @@ void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads
         Simulation sim(scene.model, scene.particles);
         sim.set_threads(threads);
         if (timed == Timed::generic_step) sim.set_kernel(KernelChoice::generic);
+        for (int k = 0; k < scene.settle_steps; ++k) {
+            sim.step();
+            sim.drain_events();
+        }
         return sim;
     };
     Simulation sim = fresh();
@@ -71,7 +75,7 @@ std::vector<int> thread_settings() {
 }  // namespace
 
 void register_engine_benchmarks() {
-    for (Workload w : {Workload::gravity, Workload::drag_walls, Workload::drag_walls_shear})
+    for (Workload w : {Workload::gravity, Workload::drag_walls, Workload::drag_walls_shear, Workload::drag_rest})
         for (std::size_t n : sizes)
             for (int threads : thread_settings())
                 register_engine(w, n, threads, Method::semi_implicit_euler,

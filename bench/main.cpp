@@ -271,7 +271,7 @@ int main(int argc, char** argv) {
     print_comparison(reporter, all_threads);
     print_gap(reporter, all_threads);
     print_scaling(reporter, all_threads, "Engine by workload (particle-steps/s; ns per particle-step, 1 thread)",
-                  "workload", "engine/", {"gravity", "drag_walls", "drag_walls_shear"});
+                  "workload", "engine/", {"gravity", "drag_walls", "drag_walls_shear", "drag_rest"});
     print_methods(reporter);
     print_scaling(reporter, all_threads,
                   "Integrators by size (gravity + quadratic drag + walls; particle-steps/s; ns per particle-step, "

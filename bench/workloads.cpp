@@ -11,6 +11,7 @@ const char* to_string(Workload w) {
         case Workload::drag_walls: return "drag_walls";
         case Workload::drag_walls_shear: return "drag_walls_shear";
         case Workload::drag_open: return "drag_open";
+        case Workload::drag_rest: return "drag_rest";
     }
     return "?";
 }
@@ -45,6 +46,14 @@ WorkloadScene make_workload(Workload w, std::size_t n, Method method) {
     e.spread_deg = 180.0;
     s.particles = emit_particles(e, m.room);
     if (w == Workload::drag_open) m.room.size = {1000.0, 1000.0, 1000.0};  // floor 497 m below the balls
+    if (w == Workload::drag_rest) {
+        m.contact.friction = 0.3;
+        s.settle_steps = 5;
+        for (ParticleSpec& p : s.particles) {
+            p.position.y = m.room.min_corner().y + p.radius;
+            p.velocity = Vec3(0.0);
+        }
+    }
     return s;
 }
 

@@ -16,12 +16,14 @@ enum class Workload {
     drag_walls,        // gravity + quadratic drag + six walls: the comparison workload
     drag_walls_shear,  // the same in a power-law shear wind
     drag_open,         // drag_walls in a room 1 km wide: no wall is reached, only flight is timed
+    drag_rest,         // drag_walls with every ball at rest on the floor (friction 0.3): a settled room
 };
 const char* to_string(Workload w);
 
 struct WorkloadScene {
     Model model;
     std::vector<ParticleSpec> particles;
+    int settle_steps = 0;  // untimed steps after every restart (drag_rest: the balls land on the floor)
 };
 
 // n identical tennis balls (57 g, r = 33 mm) spread through a 10 x 6 x 10 m room, launched at

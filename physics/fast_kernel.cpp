@@ -379,6 +379,7 @@ public:
             call(Vec3(0.0), Vec3(0.0), t0_);
             per_step_ = {step.gravity_evals, step.drag_evals, step.wind_evals};
             per_call_ = {call.gravity_evals, call.drag_evals, call.wind_evals};
+            still_walls_ = walls_that_hold_still();
         }
     }
 
@@ -401,6 +402,11 @@ public:
                     finished = flight(c, c_end, held_lanes, flagged);
                 } else {
                     std::fill_n(flagged, n, LaneMask{1});  // all held: nothing for phase 1
+                }
+                if (held.count() == n && all_held_still(c, c_end, held_lanes)) {
+                    count_evals(per_call_, n);  // the generic slide evaluates the forces once
+                    held.clear();
+                    continue;
                 }
                 std::size_t slid = 0;
                 if constexpr (has_polynomial_position(method_of(M)))
@@ -511,6 +517,51 @@ private:
         }
         count_evals(per_call_, slid);  // the forces at the step start, once per slide
         return slid;
+    }
+
+    // The resting-wall bits of the walls on which a particle at rest stays exactly as it is:
+    // without wind the forces on a particle with v = +0 are gravity alone (the drag of u = 0 is
+    // 0 for every finite drag constant), so the slide's outcome is the same for every particle
+    // and is found once, by running it. Where it is "still, ok, v = +0, x unchanged", the slide
+    // changes no bit of the particle (its ledger increments are mass * +0) and is skipped.
+    std::int64_t walls_that_hold_still() const {
+        if constexpr (HasWind || Drag == DragModel::sphere_re) {
+            return 0;
+        } else {
+            if (s_.size() == 0) return 0;
+            F f;
+            set_forces(f, f_.gravity.x, f_.gravity.y, f_.gravity.z, nullptr, s_.drag_k[0], s_.drag_re_scale[0], 0.0,
+                       0.0, 0.0);
+            const Vec3 x = 0.5 * (room_.lo + room_.hi);
+            std::int64_t walls = 0;
+            for (std::int64_t bit = 1; bit < 64; bit <<= 1) {
+                const Slide q = slide_lane(f, room_, m_.contact.friction, t0_, h_, 0.0, bit, x.x, x.y, x.z, 0.0, 0.0, 0.0);
+                const bool unchanged = (std::bit_cast<std::uint64_t>(q.vx) | std::bit_cast<std::uint64_t>(q.vy) |
+                                        std::bit_cast<std::uint64_t>(q.vz)) == 0 &&
+                                       q.x == x.x && q.y == x.y && q.z == x.z;
+                if (q.ok && unchanged) walls |= bit;
+            }
+            return walls;
+        }
+    }
+
+    // Whether every particle of a chunk rests on one wall of still_walls_ with v = +0 exactly
+    // (and is not frozen), so that its step changes nothing.
+    bool all_held_still(std::size_t c, std::size_t c_end, const LaneMask* held) const {
+        if (still_walls_ == 0) return false;
+        const double* const vx = s_.vx.data();
+        const double* const vy = s_.vy.data();
+        const double* const vz = s_.vz.data();
+        const std::int64_t walls = still_walls_;
+        std::uint64_t moving = 0;
+        for (std::size_t i = c; i < c_end; ++i) {
+            const LaneMask code = held[i - c];
+            const bool one_still_wall = (code != 0) & ((code & (code - 1)) == 0) & ((code & ~walls) == 0);
+            moving |= (std::bit_cast<std::uint64_t>(vx[i]) | std::bit_cast<std::uint64_t>(vy[i]) |
+                       std::bit_cast<std::uint64_t>(vz[i])) |
+                      static_cast<std::uint64_t>(!one_still_wall);
+        }
+        return moving == 0;
     }
 
     std::size_t flight(std::size_t c, std::size_t c_end, const LaneMask* blocked, LaneMask* flags) {
@@ -788,6 +839,7 @@ private:
     std::uint32_t pending_[contact_batch + fast_chunk];  // flagged particles waiting for phase 2
     std::size_t pending_count_ = 0;
     ForceCounters per_step_, per_call_;                  // force evaluations in one step, one call
+    std::int64_t still_walls_ = 0;                       // see walls_that_hold_still
     AdaptiveStats adaptive_;
     std::uint64_t contact_solves_ = 0;
     F f_;

@@ -170,8 +170,10 @@ TEST(FastKernel, NonFiniteParticlesFreezeExactlyAsInTheGenericKernel) {
 }
 
 // Rooms whose particles have come to rest: chunks with many resting particles slide them in
-// place (a vector pass) instead of through the contact lanes, for every method with a
-// closed-form position, with and without friction, wind and identical particles.
+// place (a vector pass) instead of through the contact lanes, and chunks at rest for good are
+// skipped, for every method with a closed-form position, with and without friction, wind,
+// identical particles, and gravity tilted so that the floor holds them (friction 0.3) or not
+// (friction 0.1: they slide on).
 TEST(FastKernel, RoomsAtRestStayBitIdentical) {
     struct Case {
         Method method;
@@ -179,6 +181,7 @@ TEST(FastKernel, RoomsAtRestStayBitIdentical) {
         WindKind wind;
         bool identical;
         double friction;
+        double tilt = 0.0;  // horizontal gravity, m/s^2
     };
     const Case cases[] = {
         {Method::semi_implicit_euler, DragModel::quadratic, WindKind::none, true, 0.4},
@@ -188,11 +191,15 @@ TEST(FastKernel, RoomsAtRestStayBitIdentical) {
         {Method::explicit_euler, DragModel::none, WindKind::none, true, 0.2},
         {Method::velocity_verlet, DragModel::quadratic, WindKind::none, true, 0.3},
         {Method::velocity_verlet, DragModel::sphere_re, WindKind::none, false, 0.3},
+        {Method::semi_implicit_euler, DragModel::quadratic, WindKind::none, true, 0.3, 1.5},
+        {Method::semi_implicit_euler, DragModel::quadratic, WindKind::none, true, 0.1, 1.5},
+        {Method::rk4, DragModel::linear, WindKind::none, true, 0.3, 0.0},
     };
     std::uint64_t seed = 900;
     for (const Case& c : cases) {
         Scenario s = random_scenario(++seed, c.method, c.drag, c.wind, 600, c.identical);
         s.model.contact.friction = c.friction;
+        s.model.world.gravity.x = c.tilt;
         s.model.world.wind.velocity *= 0.05;  // a breeze that does not lift them
         Pair p(s);
         p.step_n(1500);
