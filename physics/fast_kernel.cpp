@@ -379,7 +379,6 @@ public:
             call(Vec3(0.0), Vec3(0.0), t0_);
             per_step_ = {step.gravity_evals, step.drag_evals, step.wind_evals};
             per_call_ = {call.gravity_evals, call.drag_evals, call.wind_evals};
-            still_walls_ = walls_that_hold_still();
         }
     }
 
@@ -546,8 +545,10 @@ private:
     }
 
     // Whether every particle of a chunk rests on one wall of still_walls_ with v = +0 exactly
-    // (and is not frozen), so that its step changes nothing.
-    bool all_held_still(std::size_t c, std::size_t c_end, const LaneMask* held) const {
+    // (and is not frozen), so that its step changes nothing. still_walls_ is found on the first
+    // call (six scalar slides: as much as a step of a few hundred particles in flight).
+    bool all_held_still(std::size_t c, std::size_t c_end, const LaneMask* held) {
+        if (still_walls_ < 0) still_walls_ = walls_that_hold_still();
         if (still_walls_ == 0) return false;
         const double* const vx = s_.vx.data();
         const double* const vy = s_.vy.data();
@@ -839,7 +840,7 @@ private:
     std::uint32_t pending_[contact_batch + fast_chunk];  // flagged particles waiting for phase 2
     std::size_t pending_count_ = 0;
     ForceCounters per_step_, per_call_;                  // force evaluations in one step, one call
-    std::int64_t still_walls_ = 0;                       // see walls_that_hold_still
+    std::int64_t still_walls_ = -1;                      // see walls_that_hold_still; -1: not yet
     AdaptiveStats adaptive_;
     std::uint64_t contact_solves_ = 0;
     F f_;

@@ -16,8 +16,14 @@
 //       resting on one wall, in branch-free lanes that repeat ParticleStepper::advance's
 //       operations for those cases; everything else (corners, rests, stops, releases,
 //       freezing) by the generic ParticleStepper itself.
-//    Methods without a fixed-step flight phase (adaptive Dormand-Prince, exponential) and the
-//    sphere correlation take phase 2 for every particle, still split across threads.
+//    Particles at rest are handled per chunk before phase 2: a chunk whose particles all rest
+//    with v = +0 on walls that hold a particle still (without wind; found once by running the
+//    slide) is skipped, since the step would change no bit of it; a chunk with many resting
+//    particles slides them in place, in a vector pass (the slide of one lane is the same
+//    function the contact lanes run), and skips phase 1 when all of them rest.
+//    Methods without a fixed-step flight phase (adaptive Dormand-Prince, exponential) take
+//    phase 2 for every particle, still split across threads; with the sphere correlation (it
+//    calls pow) or wind at points inside the step, the same phases run as scalar loops.
 #pragma once
 
 #include "simulation.hpp"
