@@ -353,9 +353,10 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
 // contact kernel several times over; it stays small enough for the data to be in cache).
 constexpr std::size_t contact_batch = 64;
 // From this many resting or frozen particles in a chunk, the resting ones slide in place (a
-// vector pass over the whole chunk) rather than through the contact lanes. Measured: the
-// lanes cost about 15 ns per resting particle, the pass about 1.5 ns per particle of the chunk.
-constexpr std::size_t slide_in_place_from = 32;
+// vector pass over the whole chunk) rather than through the contact lanes. Measured on a room at
+// rest (workload drag_rest): about 15 ns per resting particle through the lanes, about 3.5 ns per
+// particle of the chunk for the pass; they break even near 60 of 256.
+constexpr std::size_t slide_in_place_from = 64;
 
 template <Flight M, DragModel Drag, bool HasWind>
 class RangeStepper {
@@ -396,16 +397,16 @@ public:
             for (std::size_t c = begin; c < end; c += fast_chunk) {
                 const std::size_t c_end = std::min(end, c + fast_chunk), n = c_end - c;
                 const LaneMask* const held_lanes = held.mark(s_, c, c_end);
+                if (held.count() == n && all_held_still(c, c_end, held_lanes)) {
+                    count_evals(per_call_, n);  // the generic slide evaluates the forces once
+                    held.clear();
+                    continue;
+                }
                 std::size_t finished = 0;
                 if (held.count() < n) {
                     finished = flight(c, c_end, held_lanes, flagged);
                 } else {
                     std::fill_n(flagged, n, LaneMask{1});  // all held: nothing for phase 1
-                }
-                if (held.count() == n && all_held_still(c, c_end, held_lanes)) {
-                    count_evals(per_call_, n);  // the generic slide evaluates the forces once
-                    held.clear();
-                    continue;
                 }
                 std::size_t slid = 0;
                 if constexpr (has_polynomial_position(method_of(M)))
