@@ -199,7 +199,7 @@ using LaneMask = std::int64_t;
 // The particles of a chunk that phase 1 must leave alone (resting or frozen), as 64-bit lanes
 // holding resting | frozen << 8 (zero for a free particle). They stay all zeros between chunks:
 // only groups of 64 particles where a flag byte is set (found by ORing the bytes eight at a
-// time, a reduction that vectorises) are widened, and cleared again after the chunk. In flight
+// time, a reduction that vectorises) are widened, and cleared when the next chunk is marked. In flight
 // most groups have none, and widening every byte cost more than the look.
 class HeldLanes {
 public:
@@ -209,6 +209,7 @@ public:
         const std::uint8_t* const resting = s.resting.data() + begin;
         const std::uint8_t* const frozen = s.frozen.data() + begin;
         const std::size_t n = end - begin;
+        clear();
         count_ = 0;
         for (std::size_t g = 0; g < n; g += group) {
             const std::size_t len = std::min(group, n - g);
@@ -227,12 +228,13 @@ public:
     // How many particles of the chunk last marked are held.
     std::size_t count() const { return count_; }
 
+private:
+    // Zeros the groups the last chunk widened.
     void clear() {
         for (; widened_ != 0; widened_ &= widened_ - 1)
             std::fill_n(lanes_ + std::countr_zero(widened_) * group, group, LaneMask{0});
     }
 
-private:
     static bool any_set(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) {
         std::uint64_t any = 0;
         std::size_t i = 0;
@@ -399,7 +401,6 @@ public:
                 const LaneMask* const held_lanes = held.mark(s_, c, c_end);
                 if (held.count() == n && all_held_still(c, c_end, held_lanes)) {
                     count_evals(per_call_, n);  // the generic slide evaluates the forces once
-                    held.clear();
                     continue;
                 }
                 std::size_t finished = 0;
@@ -408,10 +409,10 @@ public:
                 } else {
                     std::fill_n(flagged, n, LaneMask{1});  // all held: nothing for phase 1
                 }
-                std::size_t slid = 0;
-                if constexpr (has_polynomial_position(method_of(M)))
-                    if (held.count() >= slide_in_place_from) slid = slide_chunk(c, c_end, held_lanes, flagged);
-                held.clear();
+                // The slide of a resting particle does not depend on the method (ParticleStepper::
+                // slide), so every fixed-step method takes it.
+                const std::size_t slid =
+                    held.count() >= slide_in_place_from ? slide_chunk(c, c_end, held_lanes, flagged) : 0;
                 fast += finished;
                 if (finished + slid == n) continue;
                 for_each_flagged(c, c_end, n - finished - slid, flagged, [this](std::size_t i) {
