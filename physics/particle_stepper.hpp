@@ -4,7 +4,7 @@
 //    position is a quadratic in the step length (explicit and semi-implicit Euler, velocity
 //    Verlet), otherwise by a bracketing root search on the method re-run with a shorter step
 //    (for adaptive Dormand-Prince, on its dense output inside the internal step that
-//    crossed); the particle is advanced to the wall, the impact response is applied, and the
+//    crossed, or that passed the wall and came back within it); the particle is advanced to the wall, the impact response is applied, and the
 //    rest of the step continues from there;
 //  * a particle resting on walls (rebound speed fell below rest_speed while the net force
 //    pressed it on the wall) moves in the wall's plane with the normal force cancelling the
@@ -212,9 +212,13 @@ private:
             wall = -1;
             double theta_hit = 1.0;
             for (int w = 0; w < wall_count; ++w) {
-                if (c_.room->distance(w, trial.y1.x, p.radius) >= 0.0) continue;
-                const double theta = find_contact(
-                    [&](double th) { return c_.room->distance(w, trial.at(th).x, p.radius); }, 1.0);
+                auto distance = [&](double th) { return c_.room->distance(w, trial.at(th).x, p.radius); };
+                double theta;
+                if (c_.room->distance(w, trial.y1.x, p.radius) < 0.0) theta = find_contact(distance, 1.0);
+                else if (const double closest = turning_point(p.y, trial, w, p.radius, s);
+                         closest > 0.0 && distance(closest) < 0.0)
+                    theta = find_contact(distance, closest);
+                else continue;
                 if (wall < 0 || theta < theta_hit) { wall = w; theta_hit = theta; }
             }
             if (wall >= 0) {
@@ -227,6 +231,41 @@ private:
             step = p.step_hint;
         }
         return false;
+    }
+
+    // A long internal step can end clear of a wall it passed through on the way: a ball whose
+    // apex lies beyond the ceiling, a glancing pass along a side wall. Where the velocity along
+    // the wall's normal turns from towards it to away from it, the step's closest approach is
+    // found on the dense output by golden-section search (the distance is unimodal around a
+    // single turn) and returned as a fraction of the step; -1 where there is no turn, or where
+    // the wall is further than the step could have carried the particle towards it (the speed
+    // towards it falls until the turn, so the approach is at most |v_n| s).
+    double turning_point(const FlightState& y0, const DopriStep& trial, int w, double radius, double s) const {
+        const Vec3 n = RoomBounds::inward_normal(w);
+        const double v_in = glm::dot(y0.v, n), v_out = glm::dot(trial.y1.v, n);
+        if (!(v_in < 0.0 && v_out > 0.0)) return -1.0;
+        if (c_.room->distance(w, y0.x, radius) > -v_in * s) return -1.0;
+        auto distance = [&](double th) { return c_.room->distance(w, trial.at(th).x, radius); };
+        constexpr double golden = 0.6180339887498949;
+        double lo = 0.0, hi = 1.0;
+        double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+        double d_a = distance(a), d_b = distance(b);
+        for (int it = 0; it < 64 && hi - lo > 1e-12; ++it) {
+            if (d_a < d_b) {
+                hi = b;
+                b = a;
+                d_b = d_a;
+                a = hi - golden * (hi - lo);
+                d_a = distance(a);
+            } else {
+                lo = a;
+                a = b;
+                d_a = d_b;
+                b = lo + golden * (hi - lo);
+                d_b = distance(b);
+            }
+        }
+        return d_a < d_b ? a : b;
     }
 
     bool polynomial_position() const { return has_polynomial_position(c_.method); }

@@ -283,5 +283,36 @@ TEST(ContactRoot, SemiImplicitEulerImpactIsOnItsOwnTrajectory) {
     EXPECT_NEAR(bounces[0].t, std::sqrt(drop / g), 1e-12);
 }
 
+// Adaptive Dormand-Prince integrates constant gravity exactly, so its internal steps grow to the
+// whole 1 s step; the one that spans the apex starts and ends below the ceiling. A ball whose apex
+// is 1 cm beyond the ceiling's contact plane must still hit it (found on the dense output), at
+// the closed-form time, and one whose apex stays 1 cm below must not.
+TEST(Contact, AdaptiveDormandPrinceFindsAWallPassedWithinOneInternalStep) {
+    const double r = 0.05, y0 = 9.0, e = 0.8;
+    for (const double beyond : {0.01, -0.01}) {
+        Model m = drop_model(e, Method::dopri5, 1.0);
+        m.integrator.rtol = 1e-3;
+        m.integrator.atol = 1e-6;
+        const double plane = m.room.max_corner().y - r;
+        const double v0 = std::sqrt(2 * g * (plane + beyond - y0));
+        Simulation sim(m, {{{0, y0, 0}, {0, v0, 0}, 0.1, r}});
+        sim.step();
+        const auto bounces = of_kind(sim.drain_events(), EventKind::bounce);
+        if (beyond < 0) {
+            EXPECT_TRUE(bounces.empty());
+            EXPECT_NEAR(sim.state().y[0], y0 + v0 - 0.5 * g, 1e-9);  // free flight, no wall touched
+            continue;
+        }
+        ASSERT_EQ(bounces.size(), 1u);
+        EXPECT_EQ(bounces[0].wall, Wall::y_max);
+        const double t_hit = (v0 - std::sqrt(v0 * v0 - 2 * g * (plane - y0))) / g;
+        EXPECT_NEAR(bounces[0].t, t_hit, 1e-9);
+        // After the hit it falls from the plane with e times the speed it arrived with.
+        const double v_hit = v0 - g * t_hit, rest = 1.0 - t_hit;
+        EXPECT_NEAR(sim.state().y[0], plane - e * v_hit * rest - 0.5 * g * rest * rest, 1e-9);
+        EXPECT_LE(sim.state().y[0], plane);
+    }
+}
+
 }  // namespace
 }  // namespace pl
