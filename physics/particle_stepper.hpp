@@ -4,8 +4,8 @@
 //    position is a quadratic in the step length (explicit and semi-implicit Euler, velocity
 //    Verlet), otherwise by a bracketing root search on the method re-run with a shorter step
 //    (for adaptive Dormand-Prince, on its dense output inside the internal step that
-//    crossed, or that passed the wall and came back within it); the particle is advanced to the wall, the impact response is applied, and the
-//    rest of the step continues from there;
+//    crossed, or that passed the wall and came back within it); the particle is advanced to
+//    the wall, the impact response is applied, and the rest of the step continues from there;
 //  * a particle resting on walls (rebound speed fell below rest_speed while the net force
 //    pressed it on the wall) moves in the wall's plane with the normal force cancelling the
 //    pressing acceleration and Coulomb friction mu N opposing sliding; static friction holds it
