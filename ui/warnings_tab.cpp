@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,7 @@ const char* kind_name(WarningKind k) {
     }
     return "?";
 }
+constexpr std::size_t kind_count = static_cast<std::size_t>(WarningKind::mach) + 1;
 
 }  // namespace
 
@@ -28,6 +30,25 @@ void draw_warnings_tab(LabSession& s) {
                             "the method's stability limit, and no state became non-finite.");
         return;
     }
+    // Rows in variant and time order; in a scene of thousands of particles, a line per kind first
+    // says how many particles share a warning, which a scroll through the table cannot.
+    std::vector<std::pair<std::size_t, const Warning*>> rows;
+    std::size_t per_kind[kind_count] = {};
+    for (std::size_t v = 0; v < e.variant_count(); ++v)
+        for (const Warning& w : e.run(v).warnings()) {
+            rows.emplace_back(v, &w);
+            ++per_kind[static_cast<std::size_t>(w.kind)];
+        }
+    std::string summary;
+    for (std::size_t k = 0; k < kind_count; ++k) {
+        if (per_kind[k] == 0) continue;
+        if (!summary.empty()) summary += "   ";
+        summary += std::string(kind_name(static_cast<WarningKind>(k))) + ": " + std::to_string(per_kind[k]) +
+                   (per_kind[k] == 1 ? " particle" : " particles");
+    }
+    ImGui::TextUnformatted(summary.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("(once per particle and kind; click a row to inspect the particle)");
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_SizingStretchProp;
     if (!ImGui::BeginTable("##warnings", 5, flags, ImVec2(0, ImGui::GetContentRegionAvail().y))) return;
@@ -39,9 +60,6 @@ void draw_warnings_tab(LabSession& s) {
     ImGui::TableSetupColumn("message", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableHeadersRow();
     // Thousands of particles may each warn once: draw only the visible rows.
-    std::vector<std::pair<std::size_t, const Warning*>> rows;
-    for (std::size_t v = 0; v < e.variant_count(); ++v)
-        for (const Warning& w : e.run(v).warnings()) rows.emplace_back(v, &w);
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(rows.size()));
     while (clipper.Step()) {
@@ -50,6 +68,15 @@ void draw_warnings_tab(LabSession& s) {
             const Warning& w = *rows[static_cast<std::size_t>(r)].second;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
+            const bool selected =
+                s.selected_variant == static_cast<int>(v) && s.selected_particle == static_cast<int>(w.particle);
+            ImGui::PushID(r);
+            if (ImGui::Selectable("##row", selected, ImGuiSelectableFlags_SpanAllColumns)) {
+                s.selected_variant = static_cast<int>(v);
+                s.selected_particle = static_cast<int>(w.particle);
+            }
+            ImGui::PopID();
+            ImGui::SameLine();
             ImGui::Text("%.4f", w.t);
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(variant_name(s, v).c_str());
