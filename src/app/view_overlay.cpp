@@ -82,8 +82,21 @@ void label_ticks(ImDrawList* dl, const CameraMatrices& cam, const Rect& pane, co
     const float reach = 0.5f * (std::abs(dir.x) * (name_size.x + 28.0f) + std::abs(dir.y) * (name_size.y + 14.0f)) + 8.0f;
     // Kept inside the pane, where a narrow split pane would otherwise cut it off.
     const float half_w = 0.5f * name_size.x + 4.0f, half_h = 0.5f * name_size.y + 2.0f;
-    const ImVec2 at(std::clamp(end.x + dir.x * reach, pane.x + half_w, std::max(pane.right() - half_w, pane.x + half_w)),
-                    std::clamp(end.y + dir.y * reach, pane.y + half_h, std::max(pane.bottom() - half_h, pane.y + half_h)));
+    auto inside_pane = [&](ImVec2 p) {
+        return ImVec2(std::clamp(p.x, pane.x + half_w, std::max(pane.right() - half_w, pane.x + half_w)),
+                      std::clamp(p.y, pane.y + half_h, std::max(pane.bottom() - half_h, pane.y + half_h)));
+    };
+    ImVec2 at = inside_pane(ImVec2(end.x + dir.x * reach, end.y + dir.y * reach));
+    // Pushed back by the pane's edge onto the end label (a narrow split pane): above it instead
+    // (below it is the axis gizmo's corner), or below it where there is no room above.
+    const ImVec2 end_size = ImGui::CalcTextSize(format_metres(row.name_at_low_end ? ticks.front().first : ticks.back().first).c_str());
+    const bool overlaps = std::abs(at.x - end.x) < 0.5f * (name_size.x + end_size.x) + 2.0f &&
+                          std::abs(at.y - end.y) < 0.5f * (name_size.y + end_size.y) + 1.0f;
+    if (overlaps) {
+        const float drop = 0.5f * (name_size.y + end_size.y) + 3.0f;
+        const float above = end.y - drop;
+        at = inside_pane(ImVec2(end.x, above - half_h >= pane.y ? above : end.y + drop));
+    }
     centered_text(dl, at, to_u32(axis_colors[static_cast<std::size_t>(row.axis)], 0.95f), row.name);
 }
 
