@@ -19,8 +19,9 @@ namespace pl::bench {
 
 namespace {
 
+// On cache-line boundaries, as the engine's state (ParticleState's StateArray).
 struct SoaState {
-    std::vector<double> x, y, z, vx, vy, vz;
+    StateArray<double> x, y, z, vx, vy, vz;
 };
 
 struct FusedParams {

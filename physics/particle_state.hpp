@@ -3,7 +3,9 @@
 
 #include "scene.hpp"
 
+#include <cstddef>
 #include <cstdint>
+#include <new>
 #include <vector>
 
 namespace pl {
@@ -13,17 +15,35 @@ enum Wall : std::uint8_t { x_min = 0, x_max = 1, y_min = 2, y_max = 3, z_min = 4
 constexpr int wall_count = 6;
 const char* wall_name(int wall);  // "x_min" ... "z_max"
 
+// Allocates on 64-byte cache-line boundaries. malloc's 16-byte alignment made every 64-byte
+// vector load of the stepping loops straddle two cache lines, and let the line at the border of
+// two threads' particle ranges be written by both.
+template <class T>
+struct CacheLineAllocator {
+    using value_type = T;
+    static constexpr std::align_val_t alignment{64};
+    CacheLineAllocator() = default;
+    template <class U>
+    CacheLineAllocator(const CacheLineAllocator<U>&) {}
+    T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), alignment)); }
+    void deallocate(T* p, std::size_t) { ::operator delete(p, alignment); }
+    template <class U>
+    bool operator==(const CacheLineAllocator<U>&) const { return true; }
+};
+template <class T>
+using StateArray = std::vector<T, CacheLineAllocator<T>>;
+
 struct ParticleState {
-    std::vector<double> x, y, z;
-    std::vector<double> vx, vy, vz;
-    std::vector<double> mass, radius;
-    std::vector<double> drag_k, drag_re_scale;  // see DragCoefficients
-    std::vector<std::uint8_t> resting;          // bit mask of walls it rests on
-    std::vector<std::uint8_t> frozen;           // 1: state became non-finite, no longer stepped
+    StateArray<double> x, y, z;
+    StateArray<double> vx, vy, vz;
+    StateArray<double> mass, radius;
+    StateArray<double> drag_k, drag_re_scale;  // see DragCoefficients
+    StateArray<std::uint8_t> resting;          // bit mask of walls it rests on
+    StateArray<std::uint8_t> frozen;           // 1: state became non-finite, no longer stepped
 
     // Energy ledger, J, accumulated since the start.
-    std::vector<double> dissipated_bounce, dissipated_friction, dissipated_drag, wind_work;
-    std::vector<double> initial_energy;  // KE + PE at t = 0
+    StateArray<double> dissipated_bounce, dissipated_friction, dissipated_drag, wind_work;
+    StateArray<double> initial_energy;  // KE + PE at t = 0
 
     std::size_t size() const { return x.size(); }
     Vec3 position(std::size_t i) const { return {x[i], y[i], z[i]}; }

@@ -30,7 +30,7 @@ Scene two_variant_scene() {
 }
 
 bool identical(const ParticleState& a, const ParticleState& b) {
-    auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
+    auto same = [](const StateArray<double>& x, const StateArray<double>& y) {
         return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0;
     };
     return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z) && same(a.vx, b.vx) && same(a.vy, b.vy) &&

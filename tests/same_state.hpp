@@ -15,7 +15,7 @@ namespace pl::test {
 inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 template <class T>
-::testing::AssertionResult same_array(const char* name, const std::vector<T>& a, const std::vector<T>& b) {
+::testing::AssertionResult same_array(const char* name, const StateArray<T>& a, const StateArray<T>& b) {
     if (a.size() != b.size()) return ::testing::AssertionFailure() << name << ": sizes differ";
     for (std::size_t i = 0; i < a.size(); ++i) {
         bool same;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdint>
 #include <thread>
 #include <vector>
 
@@ -99,6 +100,23 @@ TEST(Threading, SmallScenesStaySingleThreaded) {
     EXPECT_EQ(particle_ranges(1000000, 3), 3 * ranges_per_thread);
     EXPECT_EQ(thread_count(0), static_cast<std::size_t>(hardware_threads()));
     EXPECT_EQ(thread_count(5), 5u);
+}
+
+// Range borders fall on multiples of 64 particles and the state arrays start on cache lines, so
+// no cache line is written by two threads (and the kernels' 64-byte vector loads do not straddle
+// two lines).
+TEST(Threading, RangesDoNotShareCacheLines) {
+    const Crowd c = crowd(10000, Method::semi_implicit_euler, DragModel::quadratic, WindKind::none);
+    const Simulation sim(c.model, c.particles);
+    const ParticleState& s = sim.state();
+    auto on_line = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p) % 64 == 0; };
+    for (const auto* a : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.dissipated_drag, &s.dissipated_bounce,
+                          &s.dissipated_friction, &s.wind_work})
+        EXPECT_TRUE(on_line(a->data()));
+    EXPECT_TRUE(on_line(s.resting.data()));
+    EXPECT_TRUE(on_line(s.frozen.data()));
+    const std::size_t n = s.size(), ranges = particle_ranges(n, 3);
+    for (std::size_t k = 1; k < ranges; ++k) EXPECT_EQ(range_begin(n, ranges, k) % 64, 0u);
 }
 
 TEST(Threading, PoolRunsEveryTaskExactlyOnce) {

@@ -33,12 +33,12 @@ void start_tracking(PlotHistory& h, const Experiment& e) {
         c.dropped_events = sim.dropped_events();
         if (!metrics || initial.size() != sim.particle_count()) {
             c.observed_steps = sim.step_count();
-            c.initial_energy = sim.state().initial_energy;
+            c.initial_energy.assign(sim.state().initial_energy.begin(), sim.state().initial_energy.end());
             continue;
         }
         const Simulation start(sim.model(), initial);  // the state at t = 0
         c.observed_steps = 0;
-        c.initial_energy = start.state().initial_energy;
+        c.initial_energy.assign(start.state().initial_energy.begin(), start.state().initial_energy.end());
         h.trackers.push_back(start_metrics(start));
         std::vector<ParticleTrack>& tracks = h.variants[v].particles;
         const double floor_y = start.model().room.floor_y();

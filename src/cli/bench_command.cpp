@@ -24,7 +24,7 @@ struct BenchOptions {
 // FNV-1a (64 bit) over the bytes of the final x, then y, then z coordinates.
 std::uint64_t position_hash(const ParticleState& s) {
     std::uint64_t h = 0xcbf29ce484222325ull;
-    for (const std::vector<double>* axis : {&s.x, &s.y, &s.z}) {
+    for (const StateArray<double>* axis : {&s.x, &s.y, &s.z}) {
         for (double d : *axis) {
             unsigned char bytes[sizeof(double)];
             std::memcpy(bytes, &d, sizeof d);
