@@ -211,15 +211,23 @@ private:
             p.step_hint = last ? std::max(step, grown) : grown;
             wall = -1;
             double theta_hit = 1.0;
-            for (int w = 0; w < wall_count; ++w) {
-                auto distance = [&](double th) { return c_.room->distance(w, trial.at(th).x, p.radius); };
-                double theta;
-                if (c_.room->distance(w, trial.y1.x, p.radius) < 0.0) theta = find_contact(distance, 1.0);
-                else if (const double closest = turning_point(p.y, trial, w, p.radius, s);
-                         closest > 0.0 && distance(closest) < 0.0)
-                    theta = find_contact(distance, closest);
-                else continue;
+            auto take_earliest = [&](int w, double theta) {
                 if (wall < 0 || theta < theta_hit) { wall = w; theta_hit = theta; }
+            };
+            for (int w = 0; w < wall_count; ++w) {
+                if (c_.room->distance(w, trial.y1.x, p.radius) >= 0.0) continue;
+                take_earliest(w, find_contact(
+                                     [&](double th) { return c_.room->distance(w, trial.at(th).x, p.radius); }, 1.0));
+            }
+            // A wall passed and left within the step: only along an axis whose velocity changed
+            // sign, towards the wall it was moving to (one product per axis in the common case).
+            for (int axis = 0; axis < 3; ++axis) {
+                const double v0 = p.y.v[axis];
+                if (!(v0 * trial.y1.v[axis] < 0.0)) continue;
+                const int w = 2 * axis + (v0 > 0.0 ? 1 : 0);  // Wall: x_min, x_max, y_min, ...
+                auto distance = [&](double th) { return c_.room->distance(w, trial.at(th).x, p.radius); };
+                const double closest = turning_point(p.y, trial, w, p.radius, s);
+                if (closest > 0.0 && distance(closest) < 0.0) take_earliest(w, find_contact(distance, closest));
             }
             if (wall >= 0) {
                 p.y = trial.at(theta_hit);
