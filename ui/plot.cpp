@@ -16,7 +16,7 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-enum class ItemKind { line, markers, rect, text };
+enum class ItemKind { line, markers, rect, text, band };
 
 struct Item {
     ItemKind kind = ItemKind::line;
@@ -24,6 +24,8 @@ struct Item {
     const double* xs = nullptr;
     const double* ys = nullptr;
     int count = 0;
+    const double *xs_high = nullptr, *ys_high = nullptr;  // band: the upper edge (xs, ys: the lower)
+    int count_high = 0;
     ImU32 color = 0;
     float thickness = 1.5f;
     Marker shape = Marker::circle;
@@ -89,6 +91,8 @@ struct Frame {
     // Far-off points (zoomed in a long way) stay finite floats; the clip rect hides them.
     static float clamp_px(float v) { return std::clamp(v, -1e5f, 1e5f); }
 };
+
+constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
 
 double to_log(double v) { return v > 0.0 ? std::log10(v) : nan; }
 
@@ -375,6 +379,20 @@ void PlotMarkers(const char* label, const double* xs, const double* ys, int coun
     context().items.push_back(std::move(item));
 }
 
+void PlotBand(const char* label, const SampleSeries& lower, const SampleSeries& upper, const Rgba& color) {
+    Item item;
+    item.kind = ItemKind::band;
+    item.legend = legend_label(label);
+    item.xs = lower.times();
+    item.ys = lower.values();
+    item.count = static_cast<int>(lower.size());
+    item.xs_high = upper.times();
+    item.ys_high = upper.values();
+    item.count_high = static_cast<int>(upper.size());
+    item.color = ToU32(color);
+    context().items.push_back(std::move(item));
+}
+
 void PlotRect(const char* label, double x0, double y0, double x1, double y1, const Rgba& color) {
     Item item;
     item.kind = ItemKind::rect;
@@ -395,6 +413,43 @@ void PlotText(const char* text, double x, double y, const Rgba& color) {
     item.rect[1] = y;
     item.color = ToU32(color);
     context().items.push_back(std::move(item));
+}
+
+// A band as one trapezoid per pixel column: the lowest sample of the lower series and the
+// highest of the upper one in that column (a column without a sample keeps the one before), so
+// a long history costs no more than the plot is wide.
+void draw_band(ImDrawList* dl, const Frame& f, const Item& item) {
+    const int columns = std::max(1, static_cast<int>(f.max.x - f.min.x));
+    std::vector<float> low(static_cast<std::size_t>(columns), nan_f), high(static_cast<std::size_t>(columns), nan_f);
+    auto fill = [&](const double* xs, const double* ys, int count, std::vector<float>& out, bool lower) {
+        const int first = static_cast<int>(std::lower_bound(xs, xs + count, f.x0) - xs);
+        const int last = static_cast<int>(std::upper_bound(xs, xs + count, f.x1) - xs);
+        for (int i = first; i < last; ++i) {
+            if (!std::isfinite(ys[i])) continue;
+            const int col = std::clamp(static_cast<int>(f.px(xs[i]) - f.min.x), 0, columns - 1);
+            const float y = f.py(ys[i]);  // screen y grows downwards
+            float& v = out[static_cast<std::size_t>(col)];
+            v = std::isnan(v) ? y : lower ? std::max(v, y) : std::min(v, y);
+        }
+    };
+    fill(item.xs, item.ys, item.count, low, true);
+    fill(item.xs_high, item.ys_high, item.count_high, high, false);
+    float prev_x = 0.0f, prev_low = nan_f, prev_high = nan_f;
+    for (int col = 0; col < columns; ++col) {
+        const float l = std::isnan(low[static_cast<std::size_t>(col)]) ? prev_low : low[static_cast<std::size_t>(col)];
+        const float h = std::isnan(high[static_cast<std::size_t>(col)]) ? prev_high : high[static_cast<std::size_t>(col)];
+        if (std::isnan(l) || std::isnan(h)) continue;
+        const float x = f.min.x + static_cast<float>(col);
+        const bool sampled = !std::isnan(low[static_cast<std::size_t>(col)]) || !std::isnan(high[static_cast<std::size_t>(col)]);
+        if (!sampled) continue;  // carried values only bridge to the next sampled column
+        if (!std::isnan(prev_low) && !std::isnan(prev_high)) {
+            const ImVec2 quad[4] = {{prev_x, prev_high}, {x, h}, {x, l}, {prev_x, prev_low}};
+            dl->AddConvexPolyFilled(quad, 4, item.color);
+        }
+        prev_x = x;
+        prev_low = l;
+        prev_high = h;
+    }
 }
 
 PlotResult EndPlot() {
@@ -490,7 +545,8 @@ PlotResult EndPlot() {
     std::vector<Entry> entries;
     if (!has_flag(PlotFlags_NoLegend)) {
         for (const Item& item : c.items) {
-            if (item.legend.empty() || item.kind == ItemKind::text) continue;
+            // A band is named after its line, whose colour the swatch takes.
+            if (item.legend.empty() || item.kind == ItemKind::text || item.kind == ItemKind::band) continue;
             if (std::none_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.label == item.legend; }))
                 entries.push_back({item.legend, item.color, {}, {}});
         }
@@ -550,6 +606,7 @@ PlotResult EndPlot() {
     for (const Item& item : c.items) {
         if (item.kind == ItemKind::rect && item_visible(item))
             dl->AddRectFilled({f.px(item.rect[0]), f.py(item.rect[3])}, {f.px(item.rect[2]), f.py(item.rect[1])}, item.color);
+        if (item.kind == ItemKind::band && item_visible(item) && !log) draw_band(dl, f, item);
     }
     for (const Item& item : c.items) {
         if (!item_visible(item)) continue;

@@ -69,6 +69,10 @@ void PlotLine(const char* label, const SampleSeries& series, const Rgba& color, 
 // Markers at (x, y); with ys == nullptr they are ticks standing on the x axis (event times).
 void PlotMarkers(const char* label, const double* xs, const double* ys, int count, const Rgba& color,
                  Marker shape = Marker::circle, float size = 4.0f);
+// The area between a lower and an upper series (a min-max range under its mean), filled in
+// `color` (give it a low alpha) beneath every line; each series has its own sample times (the
+// histories decimate by value). Not in log-log plots.
+void PlotBand(const char* label, const SampleSeries& lower, const SampleSeries& upper, const Rgba& color);
 // A filled cell [x0, x1] x [y0, y1] in data coordinates (maps, heat maps).
 void PlotRect(const char* label, double x0, double y0, double x1, double y1, const Rgba& color);
 // A text note at a data point (e.g. "current setting").

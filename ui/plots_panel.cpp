@@ -31,8 +31,15 @@ struct Marks {
     Rgba color;
 };
 
+struct Band {
+    std::string label;
+    const SampleSeries *lower, *upper;
+    Rgba color;
+};
+
 struct MotionSeries {
     std::vector<Line> lines[3];  // per Quantity
+    std::vector<Band> bands[3];
     std::vector<Marks> marks;
     bool aggregated = false;
 };
@@ -55,6 +62,9 @@ MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
             const Rgba c = series_color(static_cast<int>(v));
             Rgba faint = c;
             faint[3] = 0.45f;
+            Rgba shade = c;
+            shade[3] = 0.16f;
+            out.bands[0].push_back({name + "##range", &a.height_min, &a.height_max, shade});
             out.lines[0].push_back({name + "##mean", &a.height_mean, c, 2.0f});
             out.lines[0].push_back({name + "##min", &a.height_min, faint, 1.0f});
             out.lines[0].push_back({name + "##max", &a.height_max, faint, 1.0f});
@@ -169,7 +179,7 @@ void motion_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
     const MotionSeries ms = motion_series(s, h);
     static const char* ids[3] = {"##height", "##speed", "##kinetic"};
     static const char* names[3] = {"height", "speed", "kinetic"};
-    const char* y_labels[3] = {ms.aggregated ? "height: mean, min, max (m)" : "height (m)",
+    const char* y_labels[3] = {ms.aggregated ? "height: mean, min-max range (m)" : "height (m)",
                                ms.aggregated ? "mean speed (m/s)" : "speed (m/s)",
                                ms.aggregated ? "total kinetic energy (J)" : "kinetic energy (J)"};
     const float spacing = ImGui::GetStyle().ItemSpacing.y;
@@ -185,6 +195,7 @@ void motion_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
         plot::SetupAxes("time (s)", y_labels[q]);
         plot::SetupXLink(&p.time_axis);
         plot::SetupLegendHidden(&p.hidden_series);
+        for (const Band& b : ms.bands[q]) plot::PlotBand(b.label.c_str(), *b.lower, *b.upper, b.color);
         for (const Line& l : ms.lines[q]) plot::PlotLine(l.label.c_str(), *l.series, l.color, l.thickness);
         if (p.show_event_markers)
             for (const Marks& m : ms.marks)
