@@ -7,7 +7,9 @@
 #include "physics/preset_io.hpp"
 #include "physics/scene.hpp"
 
+#include <array>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -66,6 +68,9 @@ struct LabSession {
     // Popups the shell toggles from keys and window events; draw_popups shows them.
     bool show_help = false;                    // F1/H toggle, Esc closes
     bool confirm_quit = false;                 // window closed with unsaved changes: ask, then set requests.quit
+    // Screen rectangles {x, y, w, h} of a few named widgets as the last frame drew them (only
+    // while visible), for the GUI tests to click: "tab.warnings", "warnings.row0", "preset.NAME".
+    std::map<std::string, std::array<float, 4>> widget_rects;
 
     // Replaces the scene and rebuilds the experiment; on failure nothing changes.
     bool load(const std::filesystem::path& file);

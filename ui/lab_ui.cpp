@@ -25,6 +25,12 @@ std::string variant_name(const LabSession& s, std::size_t v) {
     return "variant " + std::to_string(v);
 }
 
+void note_item_rect(LabSession& s, const std::string& name) {
+    if (!ImGui::IsItemVisible()) return;
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    s.widget_rects[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+}
+
 std::size_t warning_count(const LabSession& s) {
     std::size_t n = 0;
     if (s.experiment)
@@ -78,6 +84,7 @@ void draw_analysis_panel(LabSession& s) {
     const std::string warnings_tab = warnings ? "Warnings (" + std::to_string(warnings) + ")###warnings" : "Warnings###warnings";
     if (warnings) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
     const bool open = ImGui::BeginTabItem(warnings_tab.c_str());
+    note_item_rect(s, "tab.warnings");
     if (warnings) ImGui::PopStyleColor();
     if (open) {
         draw_warnings_tab(s);

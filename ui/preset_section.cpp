@@ -105,6 +105,7 @@ void draw_preset_section(LabSession& s) {
                 p.preset_choice = static_cast<int>(i);
                 if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) s.load(e.path);
             }
+            note_item_rect(s, "preset." + e.name);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n(double-click to load)", e.path.string().c_str());
         }
         if (p.presets.empty()) ImGui::TextDisabled("no presets found");

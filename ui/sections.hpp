@@ -25,6 +25,8 @@ void draw_warnings_tab(LabSession& s);
 // Shared bits
 std::string variant_name(const LabSession& s, std::size_t v);  // label, or "variant N"
 std::size_t warning_count(const LabSession& s);
+// Records the last item's screen rectangle under `name` in s.widget_rects, if it is visible.
+void note_item_rect(LabSession& s, const std::string& name);
 // Saves the scene to `file`; false (and an error dialog) when it cannot.
 bool save_scene_to(LabSession& s, const std::filesystem::path& file);
 // The user's own presets: $XDG_CONFIG_HOME/particle-lab/presets or ~/.config/particle-lab/presets.

@@ -75,6 +75,7 @@ void draw_warnings_tab(LabSession& s) {
                 s.selected_variant = static_cast<int>(v);
                 s.selected_particle = static_cast<int>(w.particle);
             }
+            if (r == 0) note_item_rect(s, "warnings.row0");
             ImGui::PopID();
             ImGui::SameLine();
             ImGui::Text("%.4f", w.t);

@@ -43,6 +43,7 @@ LayoutMetrics layout_metrics() {
 }
 
 ViewCommand draw_shell_windows(ui::LabSession& s, const ShellLayout& l, PanelCollapse& collapsed) {
+    s.widget_rects.clear();  // this frame's panels note theirs again
     collapsed.controls = panel("Experiment###controls", l.controls, [&] { ui::draw_control_panel(s); });
     collapsed.plots = panel("Plots###plots", l.plots, [&] { ui::draw_plots_panel(s); });
     collapsed.analysis = panel("Analysis###analysis", l.analysis, [&] { ui::draw_analysis_panel(s); });

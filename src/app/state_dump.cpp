@@ -100,6 +100,17 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
                  {"up", vec3(Vec3(camera_up(c)))},
                  {"panes", panes},
                  {"aim", aim_json(s, view)}};
+    nlohmann::json widgets = nlohmann::json::object();
+    for (const auto& [name, r] : s.widget_rects) widgets[name] = {r[0], r[1], r[2], r[3]};
+    j["widgets"] = widgets;
+    nlohmann::json warnings = nlohmann::json::array();  // the first few, in the Warnings tab's order
+    if (s.experiment)
+        for (std::size_t v = 0; v < s.experiment->variant_count() && warnings.size() < 8; ++v)
+            for (const Warning& w : s.experiment->run(v).warnings()) {
+                if (warnings.size() == 8) break;
+                warnings.push_back({{"variant", v}, {"particle", w.particle}});
+            }
+    j["warnings"] = warnings;
     j["t"] = s.experiment ? s.experiment->time() : 0.0;
     j["base_steps"] = s.experiment ? s.experiment->base_steps() : 0;
     nlohmann::json variants = nlohmann::json::array();
