@@ -153,3 +153,17 @@ open_by_path() {
     xdotool type --delay 4 "$path"
     hold_key Return
 }
+
+# Quits with Ctrl+Q and fails unless the app exits with status 0.
+quit_app() {
+    press ctrl+q
+    wait_exit
+    [ "$APP_EXIT_CODE" -eq 0 ] || fail "exit code $APP_EXIT_CODE after Ctrl+Q; stderr: $(cat "$WORK/app.err")"
+}
+
+# Prints "x y", the centre of a widget the app listed in the state dump's "widgets" (see
+# ui::note_item_rect), from the dump file `state`.
+widget_center() {
+    local state=$1 name=$2
+    json_get "$state" "' '.join(str(round(d['widgets']['$name'][k] + d['widgets']['$name'][k + 2] / 2)) for k in (0, 1))"
+}

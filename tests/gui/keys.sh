@@ -54,8 +54,6 @@ wait_for_state "$STATE" 'd["show_help"]' "H did not open the help"
 press Escape
 wait_for_state "$STATE" 'not d["show_help"]' "Esc did not close the help"
 
-press ctrl+q
-wait_exit
-[ "$APP_EXIT_CODE" -eq 0 ] || fail "exit code $APP_EXIT_CODE after Ctrl+Q; stderr: $(cat "$WORK/app.err")"
+quit_app
 json_check "$STATE" 'd["paused"] and d["t"] > 0.5' "final dump does not show the last state"
 echo "OK"

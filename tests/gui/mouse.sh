@@ -59,9 +59,7 @@ xdotool mousemove --window "$APP_WINDOW" "$cx" "$cy" click 5 click 5
 wait_for_state "$STATE" "d['view']['camera']['distance'] > $distance" "the wheel did not zoom out"
 remembered=$(camera)
 
-press ctrl+q
-wait_exit
-[ "$APP_EXIT_CODE" -eq 0 ] || fail "exit code $APP_EXIT_CODE; stderr: $(cat "$WORK/app.err")"
+quit_app
 [ -s "$XDG_CONFIG_HOME/particle-lab/camera.txt" ] || fail "the camera was not saved"
 [ -s "$XDG_CONFIG_HOME/particle-lab/imgui.ini" ] || fail "the layout (imgui.ini) was not saved"
 

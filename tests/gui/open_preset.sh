@@ -36,7 +36,5 @@ PY
 t_loaded=$(json_get "$STATE" 'd["t"]')
 wait_for_state "$STATE" "d['t'] > $t_loaded + 0.2" "the loaded preset does not run"
 
-press ctrl+q
-wait_exit
-[ "$APP_EXIT_CODE" -eq 0 ] || fail "exit code $APP_EXIT_CODE after Ctrl+Q; stderr: $(cat "$WORK/app.err")"
+quit_app
 echo "OK"

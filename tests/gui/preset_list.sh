@@ -13,15 +13,14 @@ TWICE=drop_restitution_0.8
 start_app "$SRC/presets/default.json" --frames 1000000 --dump-state "$STATE"
 wait_for_state "$STATE" "'preset.$ONCE' in d['widgets'] and 'preset.$TWICE' in d['widgets'] and d['t'] > 0.2" \
     "the preset list does not show $ONCE and $TWICE"
-center() { json_get "$STATE" "' '.join(str(round(d['widgets']['preset.$1'][k] + d['widgets']['preset.$1'][k + 2] / 2)) for k in (0, 1))"; }
 
-read -r x y < <(center "$ONCE")
+read -r x y < <(widget_center "$STATE" "preset.$ONCE")
 xdotool mousemove --window "$APP_WINDOW" "$x" "$y" click 1
 sleep 0.6
 dump_now "$STATE"
 json_check "$STATE" 'd["preset"].endswith("default.json")' "a single click on $ONCE loaded it"
 
-read -r x y < <(center "$TWICE")
+read -r x y < <(widget_center "$STATE" "preset.$TWICE")
 xdotool mousemove --window "$APP_WINDOW" "$x" "$y" click --repeat 2 --delay 90 1
 wait_for_state "$STATE" "d['preset'].endswith('$TWICE.json')" "a double-click on $TWICE did not load it"
 json_check "$STATE" 'not d["dirty"] and d["error_popup"] == "" and d["t"] < 0.5' \
@@ -29,7 +28,5 @@ json_check "$STATE" 'not d["dirty"] and d["error_popup"] == "" and d["t"] < 0.5'
 t_loaded=$(json_get "$STATE" 'd["t"]')
 wait_for_state "$STATE" "d['t'] > $t_loaded + 0.2" "the loaded preset does not run"
 
-press ctrl+q
-wait_exit
-[ "$APP_EXIT_CODE" -eq 0 ] || fail "exit code $APP_EXIT_CODE after Ctrl+Q; stderr: $(cat "$WORK/app.err")"
+quit_app
 echo "OK"

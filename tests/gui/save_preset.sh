@@ -42,7 +42,5 @@ PY
 
 dump_now "$STATE"
 json_check "$STATE" 'not d["dirty"]' "the session is still marked dirty after saving"
-press ctrl+q
-wait_exit
-[ "$APP_EXIT_CODE" -eq 0 ] || fail "exit code $APP_EXIT_CODE after Ctrl+Q; stderr: $(cat "$WORK/app.err")"
+quit_app
 echo "OK"

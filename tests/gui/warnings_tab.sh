@@ -14,17 +14,14 @@ wait_for_state "$STATE" 'len(d["warnings"]) > 0 and "tab.warnings" in d["widgets
 read -r want_v want_p < <(json_get "$STATE" '"%d %d" % (d["warnings"][0]["variant"], d["warnings"][0]["particle"])')
 [ "$(json_get "$STATE" 'd["selected_variant"]')" != "$want_v" ] ||
     fail "variant $want_v is selected before the click: the test would prove nothing"
-center() { json_get "$STATE" "' '.join(str(round(d['widgets']['$1'][k] + d['widgets']['$1'][k + 2] / 2)) for k in (0, 1))"; }
 
-read -r tx ty < <(center tab.warnings)
+read -r tx ty < <(widget_center "$STATE" tab.warnings)
 xdotool mousemove --window "$APP_WINDOW" "$tx" "$ty" click 1
 wait_for_state "$STATE" '"warnings.row0" in d["widgets"]' "clicking the Warnings tab did not show its rows"
-read -r rx ry < <(center warnings.row0)
+read -r rx ry < <(widget_center "$STATE" warnings.row0)
 xdotool mousemove --window "$APP_WINDOW" "$rx" "$ry" click 1
 wait_for_state "$STATE" "d['selected_variant'] == $want_v and d['selected_particle'] == $want_p" \
     "clicking the first warning did not select variant $want_v, particle $want_p"
 
-press ctrl+q
-wait_exit
-[ "$APP_EXIT_CODE" -eq 0 ] || fail "exit code $APP_EXIT_CODE after Ctrl+Q; stderr: $(cat "$WORK/app.err")"
+quit_app
 echo "OK"
