@@ -242,17 +242,15 @@ private:
     }
 
     // A long internal step can end clear of a wall it passed through on the way: a ball whose
-    // apex lies beyond the ceiling, a glancing pass along a side wall. Where the velocity along
-    // the wall's normal turns from towards it to away from it, the step's closest approach is
-    // found on the dense output by golden-section search (the distance is unimodal around a
-    // single turn) and returned as a fraction of the step; -1 where there is no turn, or where
-    // the wall is further than the step could have carried the particle towards it (the speed
-    // towards it falls until the turn, so the approach is at most |v_n| s).
+    // apex lies beyond the ceiling, a glancing pass along a side wall. For a step whose velocity
+    // along the wall's normal turns from towards it to away from it (the caller checks the turn),
+    // the closest approach is found on the dense output by golden-section search (the distance
+    // is unimodal around a single turn) and returned as a fraction of the step; -1 where the wall
+    // is further than the step could have carried the particle towards it (the speed towards it
+    // falls until the turn, so the approach is at most |v_n| s).
     double turning_point(const FlightState& y0, const DopriStep& trial, int w, double radius, double s) const {
-        const Vec3 n = RoomBounds::inward_normal(w);
-        const double v_in = glm::dot(y0.v, n), v_out = glm::dot(trial.y1.v, n);
-        if (!(v_in < 0.0 && v_out > 0.0)) return -1.0;
-        if (c_.room->distance(w, y0.x, radius) > -v_in * s) return -1.0;
+        const double speed_towards = -glm::dot(y0.v, RoomBounds::inward_normal(w));
+        if (c_.room->distance(w, y0.x, radius) > speed_towards * s) return -1.0;
         auto distance = [&](double th) { return c_.room->distance(w, trial.at(th).x, radius); };
         constexpr double golden = 0.6180339887498949;
         double lo = 0.0, hi = 1.0;
