@@ -416,8 +416,8 @@ void PlotText(const char* text, double x, double y, const Rgba& color) {
 }
 
 // A band as one trapezoid per pixel column: the lowest sample of the lower series and the
-// highest of the upper one in that column (a column without a sample keeps the one before), so
-// a long history costs no more than the plot is wide.
+// highest of the upper one in that column (where only one of them has a sample there, the
+// other keeps its last value), so a long history costs no more than the plot is wide.
 void draw_band(ImDrawList* dl, const Frame& f, const Item& item) {
     const int columns = std::max(1, static_cast<int>(f.max.x - f.min.x));
     std::vector<float> low(static_cast<std::size_t>(columns), nan_f), high(static_cast<std::size_t>(columns), nan_f);
@@ -436,12 +436,12 @@ void draw_band(ImDrawList* dl, const Frame& f, const Item& item) {
     fill(item.xs_high, item.ys_high, item.count_high, high, false);
     float prev_x = 0.0f, prev_low = nan_f, prev_high = nan_f;
     for (int col = 0; col < columns; ++col) {
-        const float l = std::isnan(low[static_cast<std::size_t>(col)]) ? prev_low : low[static_cast<std::size_t>(col)];
-        const float h = std::isnan(high[static_cast<std::size_t>(col)]) ? prev_high : high[static_cast<std::size_t>(col)];
-        if (std::isnan(l) || std::isnan(h)) continue;
+        const float col_low = low[static_cast<std::size_t>(col)], col_high = high[static_cast<std::size_t>(col)];
+        if (std::isnan(col_low) && std::isnan(col_high)) continue;  // no sample in this column
+        const float l = std::isnan(col_low) ? prev_low : col_low;
+        const float h = std::isnan(col_high) ? prev_high : col_high;
+        if (std::isnan(l) || std::isnan(h)) continue;  // one edge has had no sample yet
         const float x = f.min.x + static_cast<float>(col);
-        const bool sampled = !std::isnan(low[static_cast<std::size_t>(col)]) || !std::isnan(high[static_cast<std::size_t>(col)]);
-        if (!sampled) continue;  // carried values only bridge to the next sampled column
         if (!std::isnan(prev_low) && !std::isnan(prev_high)) {
             const ImVec2 quad[4] = {{prev_x, prev_high}, {x, h}, {x, l}, {prev_x, prev_low}};
             dl->AddConvexPolyFilled(quad, 4, item.color);
