@@ -199,8 +199,8 @@ using LaneMask = std::int64_t;
 // The particles of a chunk that phase 1 must leave alone (resting or frozen), as 64-bit lanes
 // holding resting | frozen << 8 (zero for a free particle). They stay all zeros between chunks:
 // only groups of 64 particles where a flag byte is set (found by ORing the bytes eight at a
-// time, a reduction that vectorises) are widened, and cleared when the next chunk is marked. In flight
-// most groups have none, and widening every byte cost more than the look.
+// time, a reduction that vectorises) are widened, and cleared when the next chunk is marked.
+// In flight most groups have none, and widening every byte cost more than the look.
 class HeldLanes {
 public:
     static constexpr std::size_t group = 64;
