@@ -23,7 +23,9 @@ enum class Timed {
     generic_step  // Simulation::step() with the generic reference kernel
 };
 
-void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads, Timed timed) {
+// steps: steps per timed call (Simulation::step_n), as a GUI frame or a CLI output interval
+// takes them; 1 is Simulation::step().
+void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads, Timed timed, int steps = 1) {
     const StepKernel kernel = pick_fast_kernel(scene.model);
     const bool kernel_only = timed == Timed::kernel_only;
     auto fresh = [&] {
@@ -37,32 +39,33 @@ void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads
         return sim;
     };
     Simulation sim = fresh();
-    int steps = 0;
+    int taken = 0;
     for (auto _ : state) {
-        if (steps == steps_per_window) {
+        if (taken + steps > steps_per_window) {
             state.PauseTiming();
             sim = fresh();
-            steps = 0;
+            taken = 0;
             state.ResumeTiming();
         }
-        if (kernel_only) kernel(sim);
-        else sim.step();
+        if (kernel_only) kernel(sim, static_cast<std::uint32_t>(steps));
+        else sim.step_n(static_cast<std::uint64_t>(steps));
         // Consumers take the events after every frame or output sample; left to pile up for a
         // whole window they would be a growing vector, reallocated and page-faulted, not
         // what any caller sees.
         benchmark::DoNotOptimize(sim.drain_events().data());
-        ++steps;
+        taken += steps;
     }
     benchmark::DoNotOptimize(sim.state().x.data());
     state.counters[rate_counter] = benchmark::Counter(
-        static_cast<double>(state.iterations()) * static_cast<double>(scene.particles.size()), benchmark::Counter::kIsRate);
+        static_cast<double>(state.iterations()) * static_cast<double>(steps) * static_cast<double>(scene.particles.size()),
+        benchmark::Counter::kIsRate);
 }
 
 void register_engine(Workload w, std::size_t n, int threads, Method method, const std::string& name,
-                     Timed timed = Timed::step) {
-    benchmark::RegisterBenchmark(name.c_str(), [w, n, threads, method, timed](benchmark::State& state) {
+                     Timed timed = Timed::step, int steps = 1) {
+    benchmark::RegisterBenchmark(name.c_str(), [w, n, threads, method, timed, steps](benchmark::State& state) {
         const WorkloadScene scene = make_workload(w, n, method);
-        run_engine(state, scene, threads, timed);
+        run_engine(state, scene, threads, timed, steps);
     })->UseRealTime()->Unit(benchmark::kMicrosecond);
 }
 
@@ -86,6 +89,14 @@ void register_engine_benchmarks() {
             register_engine(Workload::drag_walls, n, threads, Method::semi_implicit_euler,
                             "kernel/drag_walls/n:" + size_label(n) + "/threads:" + std::to_string(threads),
                             Timed::kernel_only);
+    // Several steps per call: each block of particles takes them all while it is in cache.
+    for (int steps : {8, 32})
+        for (std::size_t n : sizes)
+            for (int threads : thread_settings())
+                register_engine(Workload::drag_walls, n, threads, Method::semi_implicit_euler,
+                                "engine_steps/drag_walls/steps:" + std::to_string(steps) + "/n:" + size_label(n) +
+                                    "/threads:" + std::to_string(threads),
+                                Timed::step, steps);
     for (std::size_t n : sizes)
         register_engine(Workload::drag_walls, n, 1, Method::semi_implicit_euler,
                         "engine_generic_kernel/drag_walls/n:" + size_label(n), Timed::generic_step);

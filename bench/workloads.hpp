@@ -31,10 +31,10 @@ struct WorkloadScene {
 // none), Cd 0.47 at sea level, dt = 2 ms.
 WorkloadScene make_workload(Workload w, std::size_t n, Method method = Method::semi_implicit_euler);
 
-// Every benchmark restarts from the initial particles after this many steps (0.5 s simulated,
+// Every benchmark restarts from the initial particles after this many steps (0.512 s simulated,
 // restart excluded from the timing), so all of them measure the same mostly-flying mix rather
 // than a room of balls that have come to rest.
-constexpr int steps_per_window = 250;
+constexpr int steps_per_window = 256;
 
 // Per-particle quadratic drag constant 1/2 rho Cd A / m (1/m) of the workload's balls.
 double workload_drag_constant(const Model& m, const ParticleSpec& p);

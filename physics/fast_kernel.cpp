@@ -365,12 +365,14 @@ class RangeStepper {
 public:
     using F = Forces<Drag, HasWind>;
 
-    RangeStepper(Simulation& sim, RangeOutput& out)
-        : sim_(sim), s_(sim.mutable_state()), m_(sim.model()), room_(m_.room), out_(out),
+    // outs: one per step of the call, in step order.
+    RangeStepper(Simulation& sim, RangeOutput* outs, std::uint32_t steps)
+        : sim_(sim), s_(sim.mutable_state()), m_(sim.model()), room_(m_.room), outs_(outs), out_(outs),
+          steps_(steps), first_step_(sim.step_count()),
           adaptive_on_(m_.integrator.method == Method::dopri5 && m_.integrator.adaptive),
           identical_(sim.identical_particles()),
           from_memory_(sim.particle_count() > cache_resident_particles),
-          ctx_{&room_, &m_.contact, m_.integrator.method, m_.integrator.rtol, m_.integrator.atol, out.events,
+          ctx_{&room_, &m_.contact, m_.integrator.method, m_.integrator.rtol, m_.integrator.atol, outs->events,
                adaptive_on_ ? &adaptive_ : nullptr, &contact_solves_},
           stepper_(ctx_, f_), t0_(sim.time()), h_(m_.integrator.dt) {
         f_.gravity = m_.world.gravity;
@@ -385,8 +387,38 @@ public:
         }
     }
 
+    // All steps of the call for particles [begin, end). Several steps go block by block: each
+    // block of particles takes every step while it is in cache (particles are independent, and
+    // each step's events are kept apart, so the results are those of one step at a time).
     void run(std::size_t begin, std::size_t end) {
-        std::size_t fast = 0;
+        const std::size_t block = steps_ == 1 ? end - begin : block_particles;
+        for (std::size_t b = begin; b < end; b += block) {
+            for (std::uint32_t k = 0; k < steps_; ++k) {
+                start_step(k);
+                run_step(b, std::min(end, b + block));
+            }
+        }
+        ForceCounters& c = outs_[0].counters;
+        add_counts(c, f_, adaptive_, contact_solves_);
+        c.fast_path += fast_;
+        // Phase 1 evaluated the forces of every particle it finished once per method stage.
+        c.gravity += fast_ * per_step_.gravity;
+        c.drag += fast_ * per_step_.drag;
+        c.wind += fast_ * per_step_.wind;
+    }
+
+private:
+    // Step k of the call: its time, and where its events and frozen particles go.
+    void start_step(std::uint32_t k) {
+        t0_ = static_cast<double>(first_step_ + k) * h_;  // Simulation::time() at that step
+        out_ = &outs_[k];
+        ctx_.events = out_->events;
+        // Only the first step of a block streams the state from memory; the others find it in cache.
+        streaming_ = from_memory_ && k == 0;
+    }
+
+    // One step of particles [begin, end).
+    void run_step(std::size_t begin, std::size_t end) {
         if constexpr (M == Flight::none) {
             for (std::size_t i = begin; i < end; ++i) step_generic(i);
         } else {
@@ -413,7 +445,7 @@ public:
                 // slide), so every fixed-step method takes it.
                 const std::size_t slid =
                     held.count() >= slide_in_place_from ? slide_chunk(c, c_end, held_lanes, flagged) : 0;
-                fast += finished;
+                fast_ += finished;
                 if (finished + slid == n) continue;
                 for_each_flagged(c, c_end, n - finished - slid, flagged, [this](std::size_t i) {
                     pending_[pending_count_++] = static_cast<std::uint32_t>(i);
@@ -422,16 +454,8 @@ public:
             }
             if (pending_count_ > 0) contact_phase();
         }
-        ForceCounters& c = out_.counters;
-        add_counts(c, f_, adaptive_, contact_solves_);
-        c.fast_path += fast;
-        // Phase 1 evaluated the forces of every particle it finished once per method stage.
-        c.gravity += fast * per_step_.gravity;
-        c.drag += fast * per_step_.drag;
-        c.wind += fast * per_step_.wind;
     }
 
-private:
     // Calls f(particle) for the `count` flagged particles of a chunk, in order. A chunk usually
     // has one or two, and a look at every flag cost about a tenth of the flight itself, so
     // groups of 64 flags are ORed together first (a reduction that vectorises), a group with a
@@ -569,10 +593,10 @@ private:
 
     std::size_t flight(std::size_t c, std::size_t c_end, const LaneMask* blocked, LaneMask* flags) {
         if (identical_) {
-            return from_memory_ ? flight_chunk<M, Drag, HasWind, true, true>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags)
+            return streaming_ ? flight_chunk<M, Drag, HasWind, true, true>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags)
                                 : flight_chunk<M, Drag, HasWind, true, false>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags);
         }
-        return from_memory_ ? flight_chunk<M, Drag, HasWind, false, true>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags)
+        return streaming_ ? flight_chunk<M, Drag, HasWind, false, true>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags)
                             : flight_chunk<M, Drag, HasWind, false, false>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags);
     }
 
@@ -792,7 +816,7 @@ private:
         count_evals(per_call_, 1);  // the acceleration at the step start, for the time of impact
         ++contact_solves_;
         if (L.notify[j])
-            out_.events->push_back(
+            out_->events->push_back(
                 {L.t[j], i, static_cast<std::int8_t>(L.wall[j]), EventKind::bounce, L.speed_in[j], L.speed_out[j]});
         ParticleStep p;
         p.y.x = Vec3(L.x[j], L.y[j], L.z[j]);
@@ -824,8 +848,8 @@ private:
         stepper_.advance(p, id, t0_, h_);
         if (!is_finite(p.y)) {
             s_.frozen[i] = 1;
-            out_.events->push_back({t0_, id, -1, EventKind::frozen, glm::length(s_.velocity(i)), 0.0});
-            out_.frozen.push_back(id);
+            out_->events->push_back({t0_, id, -1, EventKind::frozen, glm::length(s_.velocity(i)), 0.0});
+            out_->frozen.push_back(id);
             return;
         }
         store_step<Drag, HasWind>(s_, i, p, hints, s_.mass[q]);
@@ -835,10 +859,15 @@ private:
     ParticleState& s_;
     const Model& m_;
     const RoomBounds room_;
-    RangeOutput& out_;
+    RangeOutput* const outs_;
+    RangeOutput* out_;  // the current step's
+    const std::uint32_t steps_;
+    const std::uint64_t first_step_;
+    std::size_t fast_ = 0;  // particle-steps phase 1 finished
     const bool adaptive_on_;
     const bool identical_;
     const bool from_memory_;
+    bool streaming_ = false;
     std::uint32_t pending_[contact_batch + fast_chunk];  // flagged particles waiting for phase 2
     std::size_t pending_count_ = 0;
     ForceCounters per_step_, per_call_;                  // force evaluations in one step, one call
@@ -846,9 +875,10 @@ private:
     AdaptiveStats adaptive_;
     std::uint64_t contact_solves_ = 0;
     F f_;
-    const StepContext ctx_;
+    StepContext ctx_;  // its event sink follows the step (the stepper holds a reference)
     const ParticleStepper<F> stepper_;
-    const double t0_, h_;
+    double t0_;
+    const double h_;
 };
 
 // Adds a range's counters and warnings to the simulation (events are already in place).
@@ -869,37 +899,45 @@ void merge(Simulation& sim, const RangeOutput& out) {
 }
 
 template <Flight M, DragModel Drag, bool HasWind>
-void fast_step_kernel(Simulation& sim) {
+void fast_step_kernel(Simulation& sim, std::uint32_t steps) {
     const std::size_t n = sim.particle_count();
     const std::size_t ranges = particle_ranges(n, sim.threads());
-    if (ranges <= 1) {
+    if (ranges <= 1 && steps == 1) {
         RangeOutput out;
         out.events = &sim.event_sink();
-        RangeStepper<M, Drag, HasWind>(sim, out).run(0, n);
+        RangeStepper<M, Drag, HasWind>(sim, &out, 1).run(0, n);
         merge(sim, out);
+        sim.finish_step();
         return;
     }
-    // Kept from step to step (one set per calling thread), so that the ranges' event vectors keep
-    // their room instead of being allocated, grown and freed every step. The tasks reach it
-    // through `outs`: named inside a task, `kept` would be the worker's own, empty copy.
+    // One output per range and step (range k's steps at k * steps). Kept from call to call (one
+    // set per calling thread), so that the event vectors keep their room instead of being
+    // allocated, grown and freed every call. The tasks reach it through `outs`: named inside a
+    // task, `kept` would be the worker's own, empty copy.
     static thread_local std::vector<RangeOutput> kept;
     std::vector<RangeOutput>& outs = kept;
-    outs.resize(ranges);
+    outs.resize(ranges * steps);
     for (RangeOutput& out : outs) {
+        out.events = &out.own_events;
         out.own_events.clear();
         out.frozen.clear();
         out.counters = {};
     }
     auto task = [&](std::size_t k) {
-        RangeOutput& out = outs[k];
-        out.events = &out.own_events;
-        RangeStepper<M, Drag, HasWind>(sim, out).run(range_begin(n, ranges, k), range_begin(n, ranges, k + 1));
+        RangeStepper<M, Drag, HasWind>(sim, &outs[k * steps], steps)
+            .run(range_begin(n, ranges, k), range_begin(n, ranges, k + 1));
     };
-    ThreadPool::shared().run(ranges, std::min(ranges, thread_count(sim.threads())), task);
+    if (ranges == 1) task(0);
+    else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(sim.threads())), task);
+    // Step by step, range by range: the order one step at a time gives.
     std::vector<Event>& sink = sim.event_sink();
-    for (const RangeOutput& out : outs) {
-        sink.insert(sink.end(), out.own_events.begin(), out.own_events.end());
-        merge(sim, out);
+    for (std::uint32_t step = 0; step < steps; ++step) {
+        for (std::size_t k = 0; k < ranges; ++k) {
+            const RangeOutput& out = outs[k * steps + step];
+            sink.insert(sink.end(), out.own_events.begin(), out.own_events.end());
+            merge(sim, out);
+        }
+        sim.finish_step();
     }
 }
 

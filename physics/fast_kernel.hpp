@@ -24,6 +24,10 @@
 //    Methods without a fixed-step flight phase (adaptive Dormand-Prince, exponential) take
 //    phase 2 for every particle, still split across threads; with the sphere correlation (it
 //    calls pow) or wind at points inside the step, the same phases run as scalar loops.
+//  * several steps per call (Simulation::step_n): each range advances block by block, every
+//    block of block_particles through all the steps while it is in cache, instead of streaming
+//    the whole state once per step; each step's events and frozen particles are kept apart and
+//    merged step by step, range by range, so the result is that of one step at a time.
 #pragma once
 
 #include "simulation.hpp"
@@ -44,6 +48,13 @@ constexpr std::size_t ranges_per_thread = 1;
 // rather than the caches, and phase 1 writes whole vectors (see flight_chunk). Measured: masked
 // stores still win at 1e5 particles, whole vectors at 1e6.
 constexpr std::size_t cache_resident_particles = 1u << 18;
+// With several steps per call (Simulation::step_n), each block of this many particles of a range
+// takes all of them before the next block starts. Phase 1 touches about 70 bytes per particle
+// (state, drag ledger, flags), so a block (about 570 KB) stays in the core's 1 MB L2 cache.
+// Measured on the development machine at 1e6 particles, 32 steps per call: 4.8e8
+// particle-steps/s with blocks of 1024, 5.3e8 with 8192 (smaller blocks also cut the contact
+// batches short).
+constexpr std::size_t block_particles = 8192;
 
 // The kernel for the model's force terms and method (never null).
 StepKernel pick_fast_kernel(const Model& model);

@@ -129,11 +129,8 @@ MetricsDifference metrics_difference(const VariantMetrics& value, const VariantM
 }
 
 std::uint64_t catch_up(Simulation& sim, double t) {
-    std::uint64_t n = 0;
-    while (static_cast<double>(sim.step_count() + 1) * sim.dt() <= t * (1.0 + 1e-12)) {
-        sim.step();
-        ++n;
-    }
+    const std::uint64_t n = sim.steps_to(t);
+    sim.step_n(n);
     return n;
 }
 

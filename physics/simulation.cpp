@@ -15,9 +15,9 @@ namespace pl {
 namespace {
 
 
-// The stepping kernel for one combination of enabled force terms.
+// One step of the generic kernel for one combination of enabled force terms.
 template <DragModel Drag, bool HasWind>
-void step_kernel(Simulation& sim) {
+void generic_step(Simulation& sim) {
     ParticleState& s = sim.mutable_state();
     const Model& m = sim.model();
     const RoomBounds room(m.room);
@@ -52,6 +52,14 @@ void step_kernel(Simulation& sim) {
         store_step<Drag, HasWind>(s, i, p, adaptive_on ? &hints : nullptr, s.mass[i]);
     }
     add_counts(sim.mutable_counters(), f, adaptive, contact_solves);
+}
+
+template <DragModel Drag, bool HasWind>
+void step_kernel(Simulation& sim, std::uint32_t steps) {
+    for (std::uint32_t k = 0; k < steps; ++k) {
+        generic_step<Drag, HasWind>(sim);
+        sim.finish_step();
+    }
 }
 
 template <DragModel Drag>
@@ -107,8 +115,28 @@ void Simulation::set_kernel(KernelChoice choice) {
     kernel_ = pick_kernel(model_, kernel_choice_);
 }
 
-void Simulation::step() {
-    kernel_(*this);
+void Simulation::step() { step_n(1); }
+
+void Simulation::step_n(std::uint64_t n) {
+    // The monitor reads the state after the steps it samples, so a kernel call ends at each of
+    // them; in between, the kernel may take the steps in any order that gives the same bits.
+    const std::uint64_t period = monitor_period();
+    while (n > 0) {
+        const std::uint64_t to_sample = period - steps_ % period;
+        const std::uint64_t k = std::min({n, to_sample, steps_per_kernel_call});
+        kernel_(*this, static_cast<std::uint32_t>(k));
+        monitor();
+        n -= k;
+    }
+}
+
+std::uint64_t Simulation::steps_to(double t) const {
+    std::uint64_t k = 0;
+    while (static_cast<double>(steps_ + k + 1) * dt() <= t * (1.0 + 1e-12)) ++k;
+    return k;
+}
+
+void Simulation::finish_step() {
     ++steps_;
     if (events_.size() > max_pending_events) {
         // Nobody is draining: keep the newest events, count the rest, stay bounded in memory.
@@ -116,16 +144,11 @@ void Simulation::step() {
         events_.erase(events_.begin(), events_.begin() + static_cast<std::ptrdiff_t>(drop));
         dropped_events_ += drop;
     }
-    monitor();
-}
-
-void Simulation::step_n(std::uint64_t n) {
-    for (std::uint64_t k = 0; k < n; ++k) step();
 }
 
 void Simulation::run_until(double t) {
     const double target = std::round(t / dt() * (1.0 + 1e-12));
-    while (static_cast<double>(steps_) < target) step();
+    if (static_cast<double>(steps_) < target) step_n(static_cast<std::uint64_t>(target) - steps_);
 }
 
 void Simulation::set_velocity(std::size_t i, const Vec3& v) {

@@ -39,7 +39,10 @@ struct Warning {
 };
 
 class Simulation;
-using StepKernel = void (*)(Simulation&);
+// A stepping kernel advances a simulation by `steps` (>= 1) fixed steps. For each step, in
+// order, it appends that step's events, raises its warnings and calls Simulation::finish_step(),
+// so that one call of `steps` steps leaves exactly what `steps` calls of one step would.
+using StepKernel = void (*)(Simulation&, std::uint32_t steps);
 
 // fast: the production kernel (fast_kernel.hpp: vectorised flight, threads); generic: the
 // scalar reference kernel, one ParticleStepper::advance per particle. Results are bit-identical.
@@ -50,9 +53,15 @@ public:
     Simulation(Model model, const std::vector<ParticleSpec>& particles);
 
     void step();  // exactly one fixed step of model().integrator.dt
+    // n steps; the same result as n calls of step(). Large scenes advance each block of
+    // particles through several steps while it is in cache (up to steps_per_kernel_call per
+    // kernel call, ending where the monitor samples), so this is the faster way to take many.
     void step_n(std::uint64_t n);
+    static constexpr std::uint64_t steps_per_kernel_call = 32;
     // Steps until time() >= t (whole steps only; t is rounded to the step grid).
     void run_until(double t);
+    // How many whole steps from now end at or before time t (the lockstep rule of Experiment).
+    std::uint64_t steps_to(double t) const;
 
     double time() const { return static_cast<double>(steps_) * model_.integrator.dt; }
     double dt() const { return model_.integrator.dt; }
@@ -97,10 +106,13 @@ public:
     std::vector<Event>& event_sink() { return events_; }
     ForceCounters& mutable_counters() { return counters_; }
     void record_reynolds(std::size_t i, double re);
+    // Ends one step of a kernel call: the step counter and the cap on undrained events.
+    void finish_step();
     void raise(WarningKind kind, std::uint32_t particle, std::string message);
 
 private:
     void monitor();  // NaN guard, validity ranges, stability guard
+    std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
 
     Model model_;
     WindField wind_;

@@ -122,14 +122,15 @@ ScanFn pick_scan(DragModel drag, bool wind) {
 
 }  // namespace
 
+// The monitor only reads the state; beyond a handful of particles it samples every 32nd step
+// (64 ms at the default 2 ms), so that it costs a few percent of the steps it watches: one scan
+// costs about as much as a step (measured: every 8th step cost 10% at 1e3 particles). Warnings
+// carry the time of the sample that saw them.
+std::uint64_t Simulation::monitor_period() const { return state_.size() <= 64 ? 1 : 32; }
+
 void Simulation::monitor() {
     if (model_.drag.model == DragModel::none) return;
-    // The monitor only reads the state; beyond a handful of particles it samples every 32nd
-    // step (64 ms at the default 2 ms), so that it costs a few percent of the steps it watches:
-    // one scan costs about as much as a step (measured: every 8th step cost 10% at 1e3
-    // particles). Warnings carry the time of the sample that saw them.
-    const std::uint64_t period = state_.size() <= 64 ? 1 : 32;
-    if (steps_ % period != 0) return;
+    if (steps_ % monitor_period() != 0) return;
     const ReRange valid = drag_validity(model_.drag.model);
     const double limit = method_stability_limit(model_.integrator.method);
     const MonitorLimits lim{valid, dt(), limit};
