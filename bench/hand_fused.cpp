@@ -11,6 +11,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -60,16 +61,27 @@ void fused_step(SoaState& s, const FusedParams& p, std::size_t begin, std::size_
                s.vy.data() + begin, s.vz.data() + begin, p);
 }
 
+// `steps` steps of particles [begin, end), blocked as the engine's Simulation::step_n is
+// (fast_kernel.hpp): with several steps, each block of block_particles takes all of them while it
+// is in cache.
+void fused_steps(SoaState& s, const FusedParams& p, std::size_t begin, std::size_t end, int steps) {
+    const std::size_t block = steps == 1 ? end - begin : block_particles;
+    for (std::size_t b = begin; b < end; b += block)
+        for (int k = 0; k < steps; ++k) fused_step(s, p, b, std::min(end, b + block));
+}
+
 // With threads > 1: the same particle ranges on the same thread pool as the engine, so the
 // two-thread speed-up of the limit shows what the machine allows at each size.
-void fused_step(SoaState& s, const FusedParams& p, int threads) {
+void fused_steps(SoaState& s, const FusedParams& p, int threads, int steps) {
     const std::size_t n = s.x.size();
     const std::size_t ranges = particle_ranges(n, threads);
     if (ranges <= 1) {
-        fused_step(s, p, 0, n);
+        fused_steps(s, p, 0, n, steps);
         return;
     }
-    auto task = [&](std::size_t k) { fused_step(s, p, range_begin(n, ranges, k), range_begin(n, ranges, k + 1)); };
+    auto task = [&](std::size_t k) {
+        fused_steps(s, p, range_begin(n, ranges, k), range_begin(n, ranges, k + 1), steps);
+    };
     ThreadPool::shared().run(ranges, std::min<std::size_t>(ranges, static_cast<std::size_t>(threads)), task);
 }
 
@@ -87,7 +99,7 @@ void load(SoaState& s, const WorkloadScene& scene) {
     }
 }
 
-void run_limit(benchmark::State& state, Workload w, std::size_t n, int threads) {
+void run_limit(benchmark::State& state, Workload w, std::size_t n, int threads, int steps = 1) {
     const WorkloadScene scene = make_workload(w, n);
     const Model& m = scene.model;
     const ParticleSpec& ball = scene.particles.front();
@@ -107,20 +119,21 @@ void run_limit(benchmark::State& state, Workload w, std::size_t n, int threads) 
                         hi.z - r};
     SoaState s;
     load(s, scene);
-    int steps = 0;
+    int taken = 0;
     for (auto _ : state) {
-        if (steps == steps_per_window) {
+        if (taken + steps > steps_per_window) {
             state.PauseTiming();
             load(s, scene);
-            steps = 0;
+            taken = 0;
             state.ResumeTiming();
         }
-        fused_step(s, p, threads);
-        ++steps;
+        fused_steps(s, p, threads, steps);
+        taken += steps;
     }
     benchmark::DoNotOptimize(s.x.data());
-    state.counters[rate_counter] =
-        benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n), benchmark::Counter::kIsRate);
+    state.counters[rate_counter] = benchmark::Counter(
+        static_cast<double>(state.iterations()) * static_cast<double>(steps) * static_cast<double>(n),
+        benchmark::Counter::kIsRate);
 }
 
 }  // namespace
@@ -133,6 +146,18 @@ void register_limit_benchmarks() {
                 [w, n](benchmark::State& state) { run_limit(state, w, n, 1); })
                 ->UseRealTime()
                 ->Unit(benchmark::kMicrosecond);
+    // 32 steps per call, blocked as the engine's step_n: the limit for engine_steps.
+    std::vector<int> thread_settings{1};
+    if (hardware_threads() > 1) thread_settings.push_back(hardware_threads());
+    for (std::size_t n : sizes)
+        for (int threads : thread_settings) {
+            benchmark::RegisterBenchmark(
+                ("limit_hand_fused/drag_walls/steps:32/n:" + size_label(n) + "/threads:" + std::to_string(threads))
+                    .c_str(),
+                [n, threads](benchmark::State& state) { run_limit(state, Workload::drag_walls, n, threads, 32); })
+                ->UseRealTime()
+                ->Unit(benchmark::kMicrosecond);
+        }
     if (hardware_threads() < 2) return;
     for (std::size_t n : sizes) {
         const int threads = hardware_threads();

@@ -137,6 +137,44 @@ void print_comparison(const CollectingReporter& r, int all_threads) {
     }
 }
 
+// Several steps per call (Simulation::step_n, as the CLI and the GUI's frames take them): each
+// block of particles takes all the steps while it is in cache. Against the limit as above (one
+// pass over all particles per step) and the limit blocked the same way.
+void print_steps(const CollectingReporter& r, int all_threads) {
+    auto engine = [&](std::size_t n, int steps, int threads) -> std::optional<double> {
+        const std::string tail = "/n:" + size_label(n) + "/threads:" + std::to_string(threads);
+        if (threads > 1 && all_threads < 2) return std::nullopt;
+        return steps == 1 ? r.rate("engine/drag_walls" + tail)
+                          : r.rate("engine_steps/drag_walls/steps:" + std::to_string(steps) + tail);
+    };
+    auto blocked = [&](std::size_t n, int threads) -> std::optional<double> {
+        if (threads > 1 && all_threads < 2) return std::nullopt;
+        return r.rate("limit_hand_fused/drag_walls/steps:32/n:" + size_label(n) + "/threads:" + std::to_string(threads));
+    };
+    bool any = false;
+    for (std::size_t n : sizes) any = any || engine(n, 32, 1);
+    if (!any) return;
+    fmt::print("\n## Several steps per call: gravity + quadratic drag + six walls (particle-steps/s)\n\n");
+    fmt::print("engine = Simulation::step_n(steps), as the CLI and a GUI frame call it; limit = the hand-fused loop, "
+               "one pass over the particles per step (as above) or blocked like step_n (32 steps per block of "
+               "particles).\n\n");
+    fmt::print("| n | engine, 1 step | 8 steps | 32 steps | limit | limit, blocked | engine 32 / limit | "
+               "engine 32 / limit blocked | engine 32, {0} threads | speed-up | limit blocked, {0} threads | "
+               "speed-up |\n",
+               all_threads);
+    fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (std::size_t n : sizes) {
+        const auto e1 = engine(n, 1, 1), e8 = engine(n, 8, 1), e32 = engine(n, 32, 1);
+        const auto e32_all = engine(n, 32, all_threads);
+        const auto limit = r.rate("limit_hand_fused/drag_walls/n:" + size_label(n));
+        const auto b32 = blocked(n, 1), b32_all = blocked(n, all_threads);
+        fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", size_label(n), rate_text(e1),
+                   rate_text(e8), rate_text(e32), rate_text(limit), rate_text(b32), ratio_text(e32, limit),
+                   ratio_text(e32, b32), rate_text(e32_all), ratio_text(e32_all, e32, "x"), rate_text(b32_all),
+                   ratio_text(b32_all, b32, "x"));
+    }
+}
+
 // Where the engine's time goes beside the limit's: flight alone (no wall reached) and with the
 // walls, and how far two threads get with the limit's own loop on the same thread pool.
 void print_gap(const CollectingReporter& r, int all_threads) {
@@ -269,6 +307,7 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks(&reporter);
     const int all_threads = pl::hardware_threads();
     print_comparison(reporter, all_threads);
+    print_steps(reporter, all_threads);
     print_gap(reporter, all_threads);
     print_scaling(reporter, all_threads, "Engine by workload (particle-steps/s; ns per particle-step, 1 thread)",
                   "workload", "engine/", {"gravity", "drag_walls", "drag_walls_shear", "drag_rest"});

@@ -83,7 +83,7 @@ void smooth(double& average, double sample, double dt) {
 
 // This frame's steps (after the requests: a reset must not be followed by steps from the old
 // state) and what the status bar shows about them.
-void run_physics(ui::LabSession& s, double real_dt, double budget_s, const std::function<void()>& after_step) {
+void run_physics(ui::LabSession& s, double real_dt, double budget_s, const AfterSteps& after_step) {
     FrameAdvance advance;
     double simulated = 0.0;
     if (s.experiment && !s.paused) {
@@ -143,9 +143,10 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
     view.camera = (view.file ? load_camera(*view.file, view.room) : std::nullopt).value_or(framing_camera(view.room));
 
     TrailHistory trails;
-    const std::function<void()> sample_trails = [&] {
-        if (!session.experiment) return;
+    const AfterSteps sample_trails = [&]() -> std::uint64_t {
+        if (!session.experiment) return 1;
         trails.sample(*session.experiment, static_cast<std::size_t>(std::max(session.selected_particle, 0)));
+        return trails.steps_until_due(*session.experiment);
     };
     PanelCollapse collapsed;
     ViewDrag drag;

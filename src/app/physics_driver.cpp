@@ -1,11 +1,12 @@
 #include "app/physics_driver.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace pl::app {
 
 FrameAdvance advance_frame(Experiment& experiment, double real_dt_s, double time_scale, double budget_s,
-                           const std::function<void()>& after_step) {
+                           const AfterSteps& after_steps) {
     using clock = std::chrono::steady_clock;
     const clock::time_point start = clock::now();
     auto elapsed_s = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
@@ -14,13 +15,16 @@ FrameAdvance advance_frame(Experiment& experiment, double real_dt_s, double time
     const FixedStepClock::Tick tick = experiment.clock().advance(real_dt_s, experiment.base_dt());
     FrameAdvance out;
     out.behind = tick.behind;
-    for (; out.steps < tick.steps; ++out.steps) {
+    std::uint64_t group = 1;  // steps until the hook must run again
+    while (out.steps < tick.steps) {
         if (budget_s > 0.0 && out.steps > 0 && elapsed_s() > budget_s) {
             out.behind = true;
             break;
         }
-        experiment.step_base(1);
-        if (after_step) after_step();
+        const std::uint64_t n = std::min(group, tick.steps - out.steps);
+        experiment.step_base(n);
+        out.steps += n;
+        group = after_steps ? std::max<std::uint64_t>(after_steps(), 1) : tick.steps;
     }
     out.physics_ms = 1e3 * elapsed_s();
     return out;

@@ -16,9 +16,14 @@ struct FrameAdvance {
     double physics_ms = 0.0;  // wall time spent stepping
 };
 
-// `budget_s` <= 0 runs every step the clock asks for (deterministic test runs).
-// `after_step` runs after every base step (trail sampling).
+// A hook that runs after base steps (trail sampling) and returns how many base steps may pass
+// before it must run again (at least 1): the steps in between are taken in one
+// Experiment::step_base call, which lets the kernel take several per call (Simulation::step_n).
+using AfterSteps = std::function<std::uint64_t()>;
+
+// `budget_s` <= 0 runs every step the clock asks for (deterministic test runs); otherwise the
+// budget is checked between groups of steps.
 FrameAdvance advance_frame(Experiment& experiment, double real_dt_s, double time_scale, double budget_s,
-                           const std::function<void()>& after_step);
+                           const AfterSteps& after_steps);
 
 }  // namespace pl::app

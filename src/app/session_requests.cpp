@@ -17,7 +17,7 @@ constexpr double next_event_wall_budget_s = 2.0;  // real time the search may ta
 bool is_notable(EventKind k) { return k != EventKind::lift; }
 
 // Steps until some variant records a bounce, rest, stop or freeze; then pauses there.
-void run_to_next_event(ui::LabSession& s, const std::function<void()>& after_step) {
+void run_to_next_event(ui::LabSession& s, const AfterSteps& after_step) {
     Experiment& e = *s.experiment;
     std::vector<std::size_t> seen(e.variant_count());
     for (std::size_t v = 0; v < e.variant_count(); ++v) seen[v] = e.run(v).events().size();
@@ -62,7 +62,7 @@ void relaunch(ui::LabSession& s) {
 
 }  // namespace
 
-RequestOutcome perform_state_requests(ui::LabSession& s, const std::function<void()>& after_step) {
+RequestOutcome perform_state_requests(ui::LabSession& s, const AfterSteps& after_step) {
     RequestOutcome out;
     ui::Requests& r = s.requests;
     if (!s.experiment) {

@@ -2,9 +2,8 @@
 // launch again) at a safe point of the frame, before physics stepping.
 #pragma once
 
+#include "app/physics_driver.hpp"
 #include "ui/lab_session.hpp"
-
-#include <functional>
 
 namespace pl::app {
 
@@ -12,7 +11,7 @@ struct RequestOutcome {
     bool state_jumped = false;  // positions changed discontinuously (trails must restart)
 };
 
-// `after_step` runs after every base step taken here (trail sampling).
-RequestOutcome perform_state_requests(ui::LabSession& session, const std::function<void()>& after_step);
+// `after_step` runs after every base step taken here (trail sampling; what it returns is not needed).
+RequestOutcome perform_state_requests(ui::LabSession& session, const AfterSteps& after_step);
 
 }  // namespace pl::app

@@ -27,6 +27,14 @@ Trail& TrailHistory::trail_for(std::size_t variant, std::size_t particle) {
     return trails_.back();
 }
 
+std::uint64_t TrailHistory::steps_until_due(const Experiment& e) const {
+    if (&e != experiment_ || last_sample_t_ < 0.0) return 1;
+    // The test sample() makes, at the experiment's time after k more base steps.
+    std::uint64_t k = 1;
+    while (k < 64 && static_cast<double>(e.base_steps() + k) * e.base_dt() - last_sample_t_ < sample_interval_s) ++k;
+    return k;
+}
+
 void TrailHistory::sample(const Experiment& e, std::size_t selected_particle) {
     sync(&e);
     const double t = e.time();

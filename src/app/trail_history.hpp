@@ -32,6 +32,8 @@ public:
     void clear();
     // Records the tracked particles if a sample interval has passed since the last sample.
     void sample(const Experiment& experiment, std::size_t selected_particle);
+    // Base steps from now after which sample() records again (at least 1, at most 64).
+    std::uint64_t steps_until_due(const Experiment& experiment) const;
     const std::vector<Trail>& trails() const { return trails_; }
 
 private:
