@@ -38,6 +38,13 @@ struct Warning {
     std::string message;
 };
 
+// What the monitor's scan found in a range of particles: the largest drag stiffness and, in
+// particle order, the particles that crossed a limit they have not been warned about yet.
+struct MonitorScan {
+    double max_stiffness = 0.0;
+    std::vector<std::uint32_t> suspects;
+};
+
 class Simulation;
 // A stepping kernel advances a simulation by `steps` (>= 1) fixed steps. For each step, in
 // order, it appends that step's events, raises its warnings and calls Simulation::finish_step(),
@@ -113,6 +120,8 @@ public:
 private:
     void monitor();  // NaN guard, validity ranges, stability guard
     std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
+    // The monitor's scan of particles [begin, end) at time t, added to `out`.
+    void monitor_scan(double t, std::size_t begin, std::size_t end, MonitorScan& out);
 
     Model model_;
     WindField wind_;
@@ -129,6 +138,7 @@ private:
     ForceCounters counters_;
     std::vector<double> re_min_, re_max_;
     double max_stiffness_ = 0.0;
+    std::vector<MonitorScan> scans_;  // one per particle range, kept from sample to sample
     std::vector<double> adaptive_step_hint_;  // dopri5: last accepted internal step per particle
 public:
     std::vector<double>& adaptive_step_hint() { return adaptive_step_hint_; }

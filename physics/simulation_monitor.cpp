@@ -26,13 +26,6 @@ struct MonitorLimits {
     double dt, stability_limit;  // warn when dt * stiffness > stability_limit
 };
 
-// What one range of particles produced: the largest stiffness and, in order, the particles
-// that crossed a limit they have not been warned about yet.
-struct MonitorOutput {
-    double max_stiffness = 0.0;
-    std::vector<std::uint32_t> suspects;
-};
-
 // Drag stiffness d|a_drag|/du, inlined for the models whose formula vectorises.
 template <DragModel Drag>
 double stiffness(double k, double re_scale, double u) {
@@ -44,7 +37,7 @@ double stiffness(double k, double re_scale, double u) {
 template <DragModel Drag, bool HasWind>
 void scan(const ParticleState& s, const WindField& wind, double t, const MonitorLimits& lim,
           const std::uint8_t* warned, double* re_min, double* re_max, std::size_t begin, std::size_t end,
-          MonitorOutput& out) {
+          MonitorScan& out) {
     constexpr std::size_t chunk = 256;
     // 64-bit lanes (a byte-sized value would make GCC take 64 particles per vector iteration).
     std::int64_t skip[chunk], unwarned[chunk], suspect[chunk];
@@ -103,7 +96,7 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
 }
 
 using ScanFn = void (*)(const ParticleState&, const WindField&, double, const MonitorLimits&, const std::uint8_t*,
-                        double*, double*, std::size_t, std::size_t, MonitorOutput&);
+                        double*, double*, std::size_t, std::size_t, MonitorScan&);
 
 template <DragModel Drag>
 ScanFn pick_scan(bool wind) {
@@ -128,24 +121,31 @@ ScanFn pick_scan(DragModel drag, bool wind) {
 // carry the time of the sample that saw them.
 std::uint64_t Simulation::monitor_period() const { return state_.size() <= 64 ? 1 : 32; }
 
+void Simulation::monitor_scan(double t, std::size_t begin, std::size_t end, MonitorScan& out) {
+    const MonitorLimits lim{drag_validity(model_.drag.model), dt(), method_stability_limit(model_.integrator.method)};
+    const ScanFn scan_range = pick_scan(model_.drag.model, wind_.kind() != WindKind::none);
+    scan_range(state_, wind_, t, lim, warned_.data(), re_min_.data(), re_max_.data(), begin, end, out);
+}
+
 void Simulation::monitor() {
     if (model_.drag.model == DragModel::none) return;
     if (steps_ % monitor_period() != 0) return;
     const ReRange valid = drag_validity(model_.drag.model);
     const double limit = method_stability_limit(model_.integrator.method);
-    const MonitorLimits lim{valid, dt(), limit};
-    const ScanFn scan_range = pick_scan(model_.drag.model, wind_.kind() != WindKind::none);
     const std::size_t n = state_.size();
     const std::size_t ranges = particle_ranges(n, threads_);
-    std::vector<MonitorOutput> outs(ranges);
+    scans_.resize(ranges);
+    for (MonitorScan& s : scans_) {
+        s.max_stiffness = 0.0;
+        s.suspects.clear();
+    }
     auto task = [&](std::size_t k) {
-        scan_range(state_, wind_, time(), lim, warned_.data(), re_min_.data(), re_max_.data(),
-                   range_begin(n, ranges, k), range_begin(n, ranges, k + 1), outs[k]);
+        monitor_scan(time(), range_begin(n, ranges, k), range_begin(n, ranges, k + 1), scans_[k]);
     };
     if (ranges == 1) task(0);
     else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(threads_)), task);
 
-    for (const MonitorOutput& out : outs) {
+    for (const MonitorScan& out : scans_) {
         max_stiffness_ = std::max(max_stiffness_, out.max_stiffness);
         for (const std::uint32_t i : out.suspects) {
             const double u = glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
