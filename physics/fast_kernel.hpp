@@ -48,8 +48,8 @@ constexpr std::size_t ranges_per_thread = 1;
 // rather than the caches, and phase 1 writes whole vectors (see flight_chunk). Measured: masked
 // stores still win at 1e5 particles, whole vectors at 1e6.
 constexpr std::size_t cache_resident_particles = 1u << 18;
-// With several steps per call (Simulation::step_n), each block of this many particles of a range
-// takes all of them before the next block starts. Phase 1 touches about 70 bytes per particle
+// With several steps per call (Simulation::step_n), each block of about this many particles of a
+// range takes all of them before the next block starts. Phase 1 touches about 70 bytes per particle
 // (state, drag ledger, flags), so a block (about 570 KB) stays in the core's 1 MB L2 cache.
 // Measured on the development machine at 1e6 particles, 32 steps per call: 4.8e8
 // particle-steps/s with blocks of 1024, 5.3e8 with 8192 (smaller blocks also cut the contact

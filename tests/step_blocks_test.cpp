@@ -72,8 +72,9 @@ void expect_same_as_one_step_at_a_time(const Crowd& c, std::uint64_t steps, int 
 }
 
 TEST(StepBlocks, ManyStepsPerCallGiveTheBitsOfOneStepAtATime) {
-    // Two blocks in one range (the second one short), and crossing the monitor's samples.
-    const Crowd c = gusty_crowd(block_particles + 1000, Method::semi_implicit_euler);
+    // Two blocks in one range on one thread, a block per range on two; the steps cross the
+    // monitor's samples.
+    const Crowd c = gusty_crowd(2 * block_particles + 1000, Method::semi_implicit_euler);
     for (int threads : {1, 2}) {
         SCOPED_TRACE("threads " + std::to_string(threads));
         expect_same_as_one_step_at_a_time(c, 70, threads);
