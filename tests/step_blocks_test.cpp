@@ -2,59 +2,29 @@
 // block of particles (fast_kernel.hpp, block_particles). Whatever the grouping, the result must
 // be bit for bit that of one step at a time: state, ledger, events in the same order with the
 // same times, warnings (frozen particles and the monitor's), counters.
-#include "physics/emitter.hpp"
 #include "physics/fast_kernel.hpp"
 #include "physics/simulation.hpp"
 #include "same_state.hpp"
+#include "test_scenes.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
-#include <vector>
 
 namespace pl {
 namespace {
 
-struct Crowd {
-    Model model;
-    std::vector<ParticleSpec> particles;
-};
+using test::Crowd;
 
 // More particles than one block, in a small room with a gusting wind (so that each step's time
-// matters), two of them bound to become non-finite and freeze, some too fast for the drag
-// model's validity range (warnings).
+// matters), two of them bound to become non-finite and freeze, one too fast for the drag model
+// (a Mach warning; the slow ones get Reynolds-range warnings).
 Crowd gusty_crowd(std::size_t n, Method method) {
-    Crowd c;
-    c.model.room.size = {2.0, 2.0, 2.0};
-    c.model.contact.restitution = 0.6;
-    c.model.contact.friction = 0.4;
-    c.model.contact.rest_speed = 0.3;
-    c.model.integrator.method = method;
-    c.model.integrator.dt = 0.004;
-    c.model.drag.model = DragModel::quadratic;
-    c.model.world.wind.kind = WindKind::gust;
-    c.model.world.wind.velocity = {3.0, 0.0, -1.0};
-    Emitter e;
-    e.count = n;
-    e.seed = 7;
-    e.region_min = {-1, -1, -1};
-    e.region_max = {1, 1, 1};
-    e.speed_max = 9.0;
-    e.radius_min = 0.01;
-    e.radius_max = 0.08;
-    e.mass_min = 0.01;
-    e.mass_max = 0.3;
-    c.particles = emit_particles(e, c.model.room);
+    Crowd c = test::crowd(n, method, DragModel::quadratic, WindKind::gust, 7);
     c.particles[n / 3].velocity = {1e200, -1e200, 0.0};  // |v|^2 overflows: frozen in the first step
     c.particles[n - 5].velocity = {0.0, 1e300, 0.0};
     c.particles[n / 2].velocity = {150.0, 0.0, 0.0};  // above Mach 0.3: a warning
     return c;
-}
-
-std::size_t count_kind(const std::vector<Event>& events, EventKind kind) {
-    std::size_t n = 0;
-    for (const Event& e : events) n += e.kind == kind;
-    return n;
 }
 
 void expect_same_as_one_step_at_a_time(const Crowd& c, std::uint64_t steps, int threads) {
@@ -64,8 +34,8 @@ void expect_same_as_one_step_at_a_time(const Crowd& c, std::uint64_t steps, int 
     grouped.step_n(steps);
     for (std::uint64_t k = 0; k < steps; ++k) single.step();
     EXPECT_EQ(grouped.step_count(), steps);
-    EXPECT_GT(count_kind(single.events(), EventKind::bounce), 100u);
-    EXPECT_EQ(count_kind(single.events(), EventKind::frozen), 2u);
+    EXPECT_GT(test::of_kind(single.events(), EventKind::bounce).size(), 100u);
+    EXPECT_EQ(test::of_kind(single.events(), EventKind::frozen).size(), 2u);
     EXPECT_GE(single.warnings().size(), 3u);  // two frozen particles and the fast one
     test::expect_identical(grouped, single);
     EXPECT_EQ(grouped.counters().fast_path, single.counters().fast_path);

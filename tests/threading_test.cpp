@@ -5,6 +5,7 @@
 #include "physics/simulation.hpp"
 #include "physics/thread_pool.hpp"
 #include "same_state.hpp"
+#include "test_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,36 +17,8 @@
 namespace pl {
 namespace {
 
-struct Crowd {
-    Model model;
-    std::vector<ParticleSpec> particles;
-};
-
-// Many particles in a small room: plenty of bounces, rests and events in every range.
-Crowd crowd(std::size_t n, Method method, DragModel drag, WindKind wind) {
-    Crowd c;
-    c.model.room.size = {2.0, 2.0, 2.0};
-    c.model.contact.restitution = 0.6;
-    c.model.contact.friction = 0.4;
-    c.model.contact.rest_speed = 0.3;
-    c.model.integrator.method = method;
-    c.model.integrator.dt = 0.004;
-    c.model.drag.model = drag;
-    c.model.world.wind.kind = wind;
-    c.model.world.wind.velocity = {3.0, 0.0, -1.0};
-    Emitter e;
-    e.count = n;
-    e.seed = 42;
-    e.region_min = {-1, -1, -1};
-    e.region_max = {1, 1, 1};
-    e.speed_max = 8.0;
-    e.radius_min = 0.01;
-    e.radius_max = 0.08;
-    e.mass_min = 0.01;
-    e.mass_max = 0.3;
-    c.particles = emit_particles(e, c.model.room);
-    return c;
-}
+using test::crowd;
+using test::Crowd;
 
 void expect_same_for_1_2_3_threads(const Crowd& c, int steps) {
     std::vector<Simulation> runs;
