@@ -120,8 +120,6 @@ public:
 private:
     void monitor();  // NaN guard, validity ranges, stability guard
     std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
-    // The monitor's scan of particles [begin, end) at time t, added to `out`.
-    void monitor_scan(double t, std::size_t begin, std::size_t end, MonitorScan& out);
 
     Model model_;
     WindField wind_;

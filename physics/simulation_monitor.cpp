@@ -121,17 +121,13 @@ ScanFn pick_scan(DragModel drag, bool wind) {
 // carry the time of the sample that saw them.
 std::uint64_t Simulation::monitor_period() const { return state_.size() <= 64 ? 1 : 32; }
 
-void Simulation::monitor_scan(double t, std::size_t begin, std::size_t end, MonitorScan& out) {
-    const MonitorLimits lim{drag_validity(model_.drag.model), dt(), method_stability_limit(model_.integrator.method)};
-    const ScanFn scan_range = pick_scan(model_.drag.model, wind_.kind() != WindKind::none);
-    scan_range(state_, wind_, t, lim, warned_.data(), re_min_.data(), re_max_.data(), begin, end, out);
-}
-
 void Simulation::monitor() {
     if (model_.drag.model == DragModel::none) return;
     if (steps_ % monitor_period() != 0) return;
     const ReRange valid = drag_validity(model_.drag.model);
     const double limit = method_stability_limit(model_.integrator.method);
+    const MonitorLimits lim{valid, dt(), limit};
+    const ScanFn scan_range = pick_scan(model_.drag.model, wind_.kind() != WindKind::none);
     const std::size_t n = state_.size();
     const std::size_t ranges = particle_ranges(n, threads_);
     scans_.resize(ranges);
@@ -140,7 +136,8 @@ void Simulation::monitor() {
         s.suspects.clear();
     }
     auto task = [&](std::size_t k) {
-        monitor_scan(time(), range_begin(n, ranges, k), range_begin(n, ranges, k + 1), scans_[k]);
+        scan_range(state_, wind_, time(), lim, warned_.data(), re_min_.data(), re_max_.data(),
+                   range_begin(n, ranges, k), range_begin(n, ranges, k + 1), scans_[k]);
     };
     if (ranges == 1) task(0);
     else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(threads_)), task);
