@@ -4,7 +4,6 @@
 // where the time goes. Every timed step is followed by drain_events(), as the callers do.
 #include "physics/fast_kernel.hpp"
 #include "physics/simulation.hpp"
-#include "physics/thread_pool.hpp"
 #include "registry.hpp"
 #include "workloads.hpp"
 
@@ -69,11 +68,6 @@ void register_engine(Workload w, std::size_t n, int threads, Method method, cons
     })->UseRealTime()->Unit(benchmark::kMicrosecond);
 }
 
-std::vector<int> thread_settings() {
-    std::vector<int> settings{1};
-    if (hardware_threads() > 1) settings.push_back(hardware_threads());
-    return settings;
-}
 
 }  // namespace
 

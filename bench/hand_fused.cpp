@@ -62,10 +62,10 @@ void fused_step(SoaState& s, const FusedParams& p, std::size_t begin, std::size_
 }
 
 // `steps` steps of particles [begin, end), blocked as the engine's Simulation::step_n is
-// (fast_kernel.hpp): with several steps, each block of block_particles takes all of them while it
-// is in cache.
+// (fast_kernel.hpp, block_length): with several steps, each block takes all of them while it is
+// in cache.
 void fused_steps(SoaState& s, const FusedParams& p, std::size_t begin, std::size_t end, int steps) {
-    const std::size_t block = steps == 1 ? end - begin : block_particles;
+    const std::size_t block = steps == 1 ? end - begin : block_length(end - begin);
     for (std::size_t b = begin; b < end; b += block)
         for (int k = 0; k < steps; ++k) fused_step(s, p, b, std::min(end, b + block));
 }
@@ -147,10 +147,8 @@ void register_limit_benchmarks() {
                 ->UseRealTime()
                 ->Unit(benchmark::kMicrosecond);
     // 32 steps per call, blocked as the engine's step_n: the limit for engine_steps.
-    std::vector<int> thread_settings{1};
-    if (hardware_threads() > 1) thread_settings.push_back(hardware_threads());
     for (std::size_t n : sizes)
-        for (int threads : thread_settings) {
+        for (int threads : thread_settings()) {
             benchmark::RegisterBenchmark(
                 ("limit_hand_fused/drag_walls/steps:32/n:" + size_label(n) + "/threads:" + std::to_string(threads))
                     .c_str(),

@@ -2,6 +2,7 @@
 
 #include "physics/drag.hpp"
 #include "physics/emitter.hpp"
+#include "physics/thread_pool.hpp"
 
 namespace pl::bench {
 
@@ -59,6 +60,12 @@ WorkloadScene make_workload(Workload w, std::size_t n, Method method) {
 
 double workload_drag_constant(const Model& m, const ParticleSpec& p) {
     return drag_coefficients(m.drag, m.world.air, p.mass, p.radius).k;
+}
+
+std::vector<int> thread_settings() {
+    std::vector<int> settings{1};
+    if (hardware_threads() > 1) settings.push_back(hardware_threads());
+    return settings;
 }
 
 std::string size_label(std::size_t n) {

@@ -39,6 +39,9 @@ constexpr int steps_per_window = 256;
 // Per-particle quadratic drag constant 1/2 rho Cd A / m (1/m) of the workload's balls.
 double workload_drag_constant(const Model& m, const ParticleSpec& p);
 
+// 1 and, on a machine with more, all hardware threads.
+std::vector<int> thread_settings();
+
 // "1k", "10k", "1M" ...
 std::string size_label(std::size_t n);
 

@@ -391,7 +391,7 @@ public:
     // block of particles takes every step while it is in cache (particles are independent, and
     // each step's events are kept apart, so the results are those of one step at a time).
     void run(std::size_t begin, std::size_t end) {
-        const std::size_t block = steps_ == 1 ? end - begin : block_size(end - begin);
+        const std::size_t block = steps_ == 1 ? end - begin : block_length(end - begin);
         for (std::size_t b = begin; b < end; b += block) {
             for (std::uint32_t k = 0; k < steps_; ++k) {
                 start_step(k);
@@ -408,13 +408,6 @@ public:
     }
 
 private:
-    // Blocks of about block_particles, as many as the range holds best (a range of 1.2 blocks is
-    // one block, not a block and a fifth), on chunk boundaries.
-    static std::size_t block_size(std::size_t n) {
-        const std::size_t blocks = std::max<std::size_t>(1, (n + block_particles / 2) / block_particles);
-        return (n / blocks + fast_chunk - 1) / fast_chunk * fast_chunk;
-    }
-
     // Step k of the call: its time, and where its events and frozen particles go.
     void start_step(std::uint32_t k) {
         t0_ = static_cast<double>(first_step_ + k) * h_;  // Simulation::time() at that step
@@ -990,6 +983,11 @@ StepKernel pick_fast_kernel(const Model& m) {
         case Method::exponential: return pick_forces<Flight::none>(m);
     }
     return pick_forces<Flight::none>(m);
+}
+
+std::size_t block_length(std::size_t n) {
+    const std::size_t blocks = std::max<std::size_t>(1, (n + block_particles / 2) / block_particles);
+    return (n / blocks + fast_chunk - 1) / fast_chunk * fast_chunk;
 }
 
 // Boundaries on multiples of 64 particles keep the threads' stores off each other's cache lines.

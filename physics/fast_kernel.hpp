@@ -55,6 +55,10 @@ constexpr std::size_t cache_resident_particles = 1u << 18;
 // particle-steps/s with blocks of 1024, 5.3e8 with 8192 (smaller blocks also cut the contact
 // batches short).
 constexpr std::size_t block_particles = 8192;
+// The block length step_n uses for a range of n particles: as many blocks of about
+// block_particles as the range holds best (a range of 1.2 blocks is one block, not a block and
+// a fifth), on chunk boundaries.
+std::size_t block_length(std::size_t n);
 
 // The kernel for the model's force terms and method (never null).
 StepKernel pick_fast_kernel(const Model& model);
