@@ -3,7 +3,6 @@
 #include "particle_stepper.hpp"
 #include "thread_pool.hpp"
 
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <bit>
@@ -891,11 +890,7 @@ void merge(Simulation& sim, const RangeOutput& out) {
     c.rejected_steps += out.counters.rejected_steps;
     c.contacts += out.counters.contacts;
     c.fast_path += out.counters.fast_path;
-    for (const std::uint32_t i : out.frozen)
-        sim.raise(WarningKind::frozen, i,
-                  fmt::format("particle {} frozen at t = {:.6g} s: its state became non-finite (NaN/Inf) "
-                              "during the step; last finite state kept",
-                              i, sim.time()));
+    for (const std::uint32_t i : out.frozen) sim.raise(WarningKind::frozen, i);
 }
 
 template <Flight M, DragModel Drag, bool HasWind>

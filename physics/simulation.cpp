@@ -5,7 +5,6 @@
 #include "fast_kernel.hpp"
 #include "particle_stepper.hpp"
 
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -43,10 +42,7 @@ void generic_step(Simulation& sim) {
             s.frozen[i] = 1;
             sim.event_sink().push_back(
                 {t0, static_cast<std::uint32_t>(i), -1, EventKind::frozen, glm::length(s.velocity(i)), 0.0});
-            sim.raise(WarningKind::frozen, static_cast<std::uint32_t>(i),
-                      fmt::format("particle {} frozen at t = {:.6g} s: its state became non-finite (NaN/Inf) "
-                                  "during the step; last finite state kept",
-                                  i, t0));
+            sim.raise(WarningKind::frozen, static_cast<std::uint32_t>(i));
             continue;
         }
         store_step<Drag, HasWind>(s, i, p, adaptive_on ? &hints : nullptr, s.mass[i]);
@@ -196,11 +192,11 @@ void Simulation::record_reynolds(std::size_t i, double re) {
     re_max_[i] = std::max(re_max_[i], re);
 }
 
-void Simulation::raise(WarningKind kind, std::uint32_t particle, std::string message) {
+void Simulation::raise(WarningKind kind, std::uint32_t particle, double value) {
     const auto bit = static_cast<std::uint8_t>(1u << static_cast<unsigned>(kind));
     if (warned_[particle] & bit) return;
     warned_[particle] |= bit;
-    warnings_.push_back({kind, particle, time(), std::move(message)});
+    warnings_.push_back({kind, particle, time(), value});
 }
 
 }  // namespace pl

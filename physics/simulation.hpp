@@ -6,6 +6,7 @@
 #include "events.hpp"
 #include "particle_state.hpp"
 #include "scene.hpp"
+#include "warnings.hpp"
 #include "wind.hpp"
 
 #include <cstdint>
@@ -21,21 +22,6 @@ struct ForceCounters {
     std::uint64_t accepted_steps = 0;  // dopri5 internal steps
     std::uint64_t contacts = 0;        // time-of-impact solves
     std::uint64_t fast_path = 0;       // particle-steps the vectorised fast path finished
-};
-
-enum class WarningKind : std::uint8_t {
-    drag_validity,  // Re outside the drag model's validity range
-    stability,      // dt * drag stiffness beyond the method's limit
-    frozen,         // state became non-finite
-    mach,           // relative speed above Mach 0.3: compressibility not modelled
-};
-
-// Raised once per particle and kind; `message` is ready for the UI and CLI.
-struct Warning {
-    WarningKind kind;
-    std::uint32_t particle;
-    double t;
-    std::string message;
 };
 
 // What the monitor's scan found in a range of particles: the largest drag stiffness and, in
@@ -115,7 +101,8 @@ public:
     void record_reynolds(std::size_t i, double re);
     // Ends one step of a kernel call: the step counter and the cap on undrained events.
     void finish_step();
-    void raise(WarningKind kind, std::uint32_t particle, std::string message);
+    // Records a warning at time() unless this particle had one of this kind already.
+    void raise(WarningKind kind, std::uint32_t particle, double value = 0.0);
 
 private:
     void monitor();  // NaN guard, validity ranges, stability guard

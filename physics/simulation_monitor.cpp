@@ -9,7 +9,6 @@
 #include "fast_kernel.hpp"
 #include "thread_pool.hpp"
 
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <bit>
@@ -147,22 +146,10 @@ void Simulation::monitor() {
         for (const std::uint32_t i : out.suspects) {
             const double u = glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
             const double re = state_.drag_re_scale[i] * u;
-            if (u > 0.0 && (re < valid.lo || re > valid.hi))
-                raise(WarningKind::drag_validity, i,
-                      fmt::format("particle {}: Re = {:.3g} at t = {:.3f} s is outside the {} drag model's "
-                                  "validity range {:.3g} < Re < {:.3g}",
-                                  i, re, time(), to_string(model_.drag.model), valid.lo, valid.hi));
-            if (u > mach_warning_speed)
-                raise(WarningKind::mach, i,
-                      fmt::format("particle {}: Mach {:.2f} at t = {:.3f} s; compressibility is not modelled "
-                                  "(results unreliable above Mach 0.3)",
-                                  i, u / 343.0, time()));
+            if (u > 0.0 && (re < valid.lo || re > valid.hi)) raise(WarningKind::drag_validity, i, re);
+            if (u > mach_warning_speed) raise(WarningKind::mach, i, u);
             const double k = drag_stiffness(model_.drag.model, {state_.drag_k[i], state_.drag_re_scale[i]}, u);
-            if (k * dt() > limit)
-                raise(WarningKind::stability, i,
-                      fmt::format("particle {}: dt * k = {:.3g} exceeds the {} stability limit {:.3g} "
-                                  "(drag stiffness k = {:.3g} 1/s); use dt <= {:.3g} s or the exponential method",
-                                  i, k * dt(), to_string(model_.integrator.method), limit, k, 0.9 * limit / k));
+            if (k * dt() > limit) raise(WarningKind::stability, i, k);
         }
     }
 }

@@ -74,6 +74,37 @@ TEST(Drag, ExponentialStepStaysStableForStiffDrag) {
     EXPECT_TRUE(guarded);
 }
 
+// A warning keeps its number, not its text (a big scene can warn for most particles); the text
+// is made on demand and quotes the model's limits.
+TEST(Drag, WarningsKeepTheirNumberAndSayItOnDemand) {
+    EXPECT_LE(sizeof(Warning), 24u);
+    // k = b / m = 100 1/s at dt = 0.05 s: dt k = 5, beyond semi-implicit Euler's limit of 2.
+    Simulation euler(open_air(linear(1.0), Method::semi_implicit_euler, 0.05), {{{0, 0, 0}, {50, 50, 0}, 0.01, 0.05}});
+    euler.step();
+    const Warning* stiff = nullptr;
+    for (const Warning& w : euler.warnings())
+        if (w.kind == WarningKind::stability) stiff = &w;
+    ASSERT_NE(stiff, nullptr);
+    EXPECT_DOUBLE_EQ(stiff->value, 100.0);
+    EXPECT_EQ(warning_message(*stiff, euler.model()),
+              std::string("particle 0: dt * k = 5 exceeds the ") + to_string(Method::semi_implicit_euler) +
+                  " stability limit 2 (drag stiffness k = 100 1/s); use dt <= 0.018 s or the exponential method");
+    // 200 m/s through still air: Mach 0.58 at the monitor's first sample, the start state.
+    Simulation fast(open_air(quadratic(0.47), Method::rk4, 0.001), {{{0, 0, 0}, {200, 0, 0}, 0.1, 0.05}});
+    fast.step();
+    bool mach = false;
+    for (const Warning& w : fast.warnings()) {
+        if (w.kind != WarningKind::mach) continue;
+        mach = true;
+        EXPECT_EQ(w.t, 0.0);
+        EXPECT_EQ(w.value, 200.0);
+        EXPECT_EQ(warning_message(w, fast.model()),
+                  "particle 0: Mach 0.58 at t = 0.000 s; compressibility is not modelled (results unreliable above "
+                  "Mach 0.3)");
+    }
+    EXPECT_TRUE(mach);
+}
+
 TEST(Drag, VerticalQuadraticFallFollowsTanh) {
     // Falling from rest: v(t) = -v_t tanh(g t / v_t).
     const double m = 0.057, r = 0.033, cd = 0.47;

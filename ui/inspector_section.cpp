@@ -73,7 +73,9 @@ void draw_inspector_section(LabSession& s) {
         ImGui::EndTable();
     }
     for (const Warning& w : sim.warnings())
-        if (w.particle == i) ImGui::TextColored({1.0f, 0.75f, 0.3f, 1.0f}, "t = %.3f s: %s", w.t, w.message.c_str());
+        if (w.particle == i)
+            ImGui::TextColored({1.0f, 0.75f, 0.3f, 1.0f}, "t = %.3f s: %s", w.t,
+                               warning_message(w, sim.model()).c_str());
 }
 
 }  // namespace pl::ui

@@ -86,8 +86,9 @@ void draw_warnings_tab(LabSession& s) {
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(kind_name(w.kind));
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(w.message.c_str());
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", w.message.c_str());
+            const std::string message = warning_message(w, e.run(v).model());
+            ImGui::TextUnformatted(message.c_str());
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", message.c_str());
         }
     }
     ImGui::EndTable();

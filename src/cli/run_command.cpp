@@ -47,13 +47,12 @@ void write_event_rows(CsvWriter& csv, const std::vector<Event>& events, const st
 
 // Warnings are raised once per particle and kind; a big scene can still raise thousands, so at
 // most `per_kind` of each kind are printed, followed by how many more there were.
-void print_warnings(const std::vector<Warning>& warnings, std::FILE* out, const std::string& prefix,
-                    std::size_t per_kind = 10) {
+void print_warnings(const Simulation& sim, std::FILE* out, const std::string& prefix, std::size_t per_kind = 10) {
     std::array<std::size_t, 4> seen{};
-    for (const Warning& w : warnings) {
+    for (const Warning& w : sim.warnings()) {
         const auto k = static_cast<std::size_t>(w.kind);
         if (k < seen.size() && seen[k]++ >= per_kind) continue;
-        std::fprintf(out, "%s%s\n", prefix.c_str(), w.message.c_str());
+        std::fprintf(out, "%s%s\n", prefix.c_str(), warning_message(w, sim.model()).c_str());
     }
     for (std::size_t k = 0; k < seen.size(); ++k)
         if (seen[k] > per_kind)
@@ -89,7 +88,7 @@ void print_summary(const Scene& scene, const std::vector<Simulation>& sims, cons
             std::printf("; dopri5 internal steps %llu accepted, %llu rejected",
                         static_cast<unsigned long long>(c.accepted_steps), static_cast<unsigned long long>(c.rejected_steps));
         std::printf("\n");
-        print_warnings(sim.warnings(), stdout, "  warning: ");
+        print_warnings(sim, stdout, "  warning: ");
     }
 }
 
@@ -181,7 +180,7 @@ int run(const RunOptions& o) {
         print_summary(*scene, sims, event_counts);
     } else {
         for (const Simulation& sim : sims)
-            print_warnings(sim.warnings(), stderr, fmt::format("particle-lab run: warning ({}): ", sim.model().label));
+            print_warnings(sim, stderr, fmt::format("particle-lab run: warning ({}): ", sim.model().label));
     }
     return exit_ok;
 }
