@@ -200,12 +200,15 @@ PlotHistory& history_of(LabSession& s) {
     return h;
 }
 
-void record_step(LabSession& s) {
-    if (!s.experiment) return;
+std::uint64_t record_step(LabSession& s) {
+    constexpr std::uint64_t no_limit = std::numeric_limits<std::uint64_t>::max();
+    if (!s.experiment) return no_limit;
     PlotHistory& h = history_of(s);
+    if (h.trackers.empty()) return no_limit;  // no live metrics: record_frame's samples suffice
     observe_all(s, h);
     const double t = s.experiment->time();
     if (t - h.last_particle_sample >= min_particle_sample_interval_s) sample_particles(h, *s.experiment, t);
+    return 1;
 }
 
 void record_frame(LabSession& s) {

@@ -4,15 +4,19 @@
 
 #include "ui/lab_session.hpp"
 
+#include <cstdint>
+
 namespace pl::ui {
 
 // Call once per frame after physics stepping: appends plot samples and takes the new events
 // (drains Simulation::events() of every variant).
 void record_frame(LabSession&);
-// Optional, after every base step (the shell's after_step hook, also inside single step and run
-// to the next event): makes the live comparison metrics exact (apex, range at the first impact
-// need every step) and samples the plots finely. Without it they are sampled once per frame.
-void record_step(LabSession&);
+// After base steps (the shell's after-steps hook, also inside single step and run to the next
+// event). With live comparison metrics (up to PlotHistory::max_metrics_particles particles) it
+// observes every step, so that they are those of a timed run (the apex and the range at the
+// first impact need every step), and samples the plots finely. Returns how many base steps may
+// pass before it must run again: 1 with live metrics, otherwise no limit (record_frame does).
+std::uint64_t record_step(LabSession&);
 void draw_control_panel(LabSession&);   // left column: preset, time, launch, scene, variants, inspector
 void draw_plots_panel(LabSession&);     // height / speed / kinetic energy / energy ledger plots
 void draw_analysis_panel(LabSession&);  // bottom tabs: compare, events, ledger, accuracy, stability, advise, warnings

@@ -143,10 +143,11 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
     view.camera = (view.file ? load_camera(*view.file, view.room) : std::nullopt).value_or(framing_camera(view.room));
 
     TrailHistory trails;
-    const AfterSteps sample_trails = [&]() -> std::uint64_t {
+    // After each group of base steps: trails, and the live metrics, which need every step.
+    const AfterSteps after_steps = [&]() -> std::uint64_t {
         if (!session.experiment) return 1;
         trails.sample(*session.experiment, static_cast<std::size_t>(std::max(session.selected_particle, 0)));
-        return trails.steps_until_due(*session.experiment);
+        return std::min(ui::record_step(session), trails.steps_until_due(*session.experiment));
     };
     PanelCollapse collapsed;
     ViewDrag drag;
@@ -180,8 +181,8 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         handle_view_keys(window.handle(), input, view.camera, static_cast<float>(real_dt));
 
         trails.sync(session.experiment.get());
-        if (perform_state_requests(session, sample_trails).state_jumped) trails.clear();
-        run_physics(session, real_dt, deterministic ? 0.0 : physics_budget_s, sample_trails);
+        if (perform_state_requests(session, after_steps).state_jumped) trails.clear();
+        run_physics(session, real_dt, deterministic ? 0.0 : physics_budget_s, after_steps);
         smooth(session.frame.fps, 1.0 / std::max(measured_dt, 1e-6), measured_dt);
         ui::record_frame(session);
         follow_room(view, session);

@@ -11,7 +11,7 @@ struct RequestOutcome {
     bool state_jumped = false;  // positions changed discontinuously (trails must restart)
 };
 
-// `after_step` runs after every base step taken here (trail sampling; what it returns is not needed).
+// `after_step` runs after every base step taken here (trails, live metrics; what it returns is not needed).
 RequestOutcome perform_state_requests(ui::LabSession& session, const AfterSteps& after_step);
 
 }  // namespace pl::app

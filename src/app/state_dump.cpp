@@ -1,6 +1,8 @@
 #include "app/state_dump.hpp"
 
 #include "app/picking.hpp"
+#include "cli/metrics_json.hpp"
+#include "ui/plot_history.hpp"
 
 #include <imgui.h>
 #include <nlohmann/json.hpp>
@@ -111,6 +113,19 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
                 warnings.push_back({{"variant", v}, {"particle", w.particle}});
             }
     j["warnings"] = warnings;
+    // The Compare tab's live metrics of the selected particle, one object per variant (null
+    // without live metrics), named as `particle-lab compare --json` names them.
+    nlohmann::json live = nullptr;
+    const std::size_t selected = static_cast<std::size_t>(std::max(s.selected_particle, 0));
+    if (s.experiment && s.history && s.history->trackers.size() == s.experiment->variant_count()) {
+        live = nlohmann::json::array();
+        for (std::size_t v = 0; v < s.experiment->variant_count(); ++v) {
+            const VariantMetrics m = metrics_of(s.history->trackers[v], s.experiment->run(v));
+            live.push_back(selected < m.particles.size() ? nlohmann::json(cli::particle_metrics_json(m.particles[selected]))
+                                                         : nlohmann::json(nullptr));
+        }
+    }
+    j["live_metrics"] = live;
     j["t"] = s.experiment ? s.experiment->time() : 0.0;
     j["base_steps"] = s.experiment ? s.experiment->base_steps() : 0;
     nlohmann::json variants = nlohmann::json::array();

@@ -1,6 +1,7 @@
 // particle-lab compare: one metrics row per variant, and the difference to a baseline variant.
 #include "cli/cli_support.hpp"
 
+#include "cli/metrics_json.hpp"
 #include "physics/metrics.hpp"
 
 #include <fmt/format.h>
@@ -22,25 +23,6 @@ struct CompareCliOptions {
 };
 
 using Json = nlohmann::ordered_json;
-
-Json optional_json(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
-
-Json particle_json(const ParticleMetrics& p) {
-    Json j;
-    j["time_of_flight_s"] = optional_json(p.first_impact_time);
-    j["first_impact_wall"] = p.first_impact_wall >= 0 ? Json(wall_name(p.first_impact_wall)) : Json(nullptr);
-    j["range_at_first_impact_m"] = optional_json(p.range_at_first_impact);
-    j["apex_height_m"] = p.apex_height;
-    j["apex_time_s"] = p.apex_time;
-    j["final_range_m"] = p.final_range;
-    j["bounces"] = p.bounces;
-    j["time_to_rest_s"] = optional_json(p.time_to_rest);
-    j["lost_to_drag_J"] = p.lost_drag;
-    j["lost_to_bounces_J"] = p.lost_bounce;
-    j["lost_to_friction_J"] = p.lost_friction;
-    j["wind_work_J"] = p.wind_work;
-    return j;
-}
 
 Json difference_json(const MetricsDifference& d) {
     Json j;
@@ -106,7 +88,7 @@ int compare(const CompareCliOptions& o) {
             const VariantMetrics& m = c.variants[v];
             Json jv;
             jv["label"] = variant_name(*scene, v);
-            jv["particle"] = particle_json(m.particles[o.particle]);
+            jv["particle"] = particle_metrics_json(m.particles[o.particle]);
             Json all;
             all["all_at_rest_s"] = optional_json(m.all_at_rest_time);
             all["lost_to_drag_J"] = m.lost_drag;
