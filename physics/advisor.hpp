@@ -5,6 +5,7 @@
 // dimensionless numbers that explain them (Reynolds range, drag/weight ratio, Mach number).
 #pragma once
 
+#include "drag.hpp"
 #include "scene.hpp"
 
 #include <atomic>
@@ -57,7 +58,5 @@ struct Advice {
 };
 
 Advice advise(const Scene& scene, const AdviceOptions& options);
-
-constexpr double speed_of_sound_mps = 343.0;  // dry air at 15 C
 
 }  // namespace pl

@@ -5,6 +5,9 @@
 
 namespace pl {
 
+// Speed of sound in dry air at 20 C: the Mach numbers of the monitor's warning and the advisor.
+constexpr double speed_of_sound_mps = 343.0;
+
 // Coefficients precomputed per particle so the hot loop does no divisions or pi.
 // Acceleration (drag force / mass) for relative velocity u = v - w:
 //   linear:     a = -k u                    k = b / m

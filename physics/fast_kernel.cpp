@@ -3,7 +3,6 @@
 #include "particle_stepper.hpp"
 #include "thread_pool.hpp"
 
-
 #include <algorithm>
 #include <bit>
 #include <cfloat>

@@ -5,7 +5,6 @@
 #include "fast_kernel.hpp"
 #include "particle_stepper.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 

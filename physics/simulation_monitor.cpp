@@ -9,7 +9,6 @@
 #include "fast_kernel.hpp"
 #include "thread_pool.hpp"
 
-
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -18,7 +17,7 @@ namespace pl {
 
 namespace {
 
-constexpr double mach_warning_speed = 0.3 * 343.0;  // m/s
+constexpr double mach_warning_speed = 0.3 * speed_of_sound_mps;  // m/s
 
 struct MonitorLimits {
     ReRange valid;

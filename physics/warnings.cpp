@@ -17,7 +17,7 @@ std::string warning_message(const Warning& w, const Model& model) {
         case WarningKind::mach:
             return fmt::format("particle {}: Mach {:.2f} at t = {:.3f} s; compressibility is not modelled (results "
                                "unreliable above Mach 0.3)",
-                               w.particle, w.value / 343.0, w.t);
+                               w.particle, w.value / speed_of_sound_mps, w.t);
         case WarningKind::stability: {
             const double k = w.value, dt = model.integrator.dt;
             const double limit = method_stability_limit(model.integrator.method);

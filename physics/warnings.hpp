@@ -1,5 +1,5 @@
 // What a simulation warns about, once per particle and kind. A big scene can raise a warning
-// for most of its particles, so a warning keeps only the number it reports (40 bytes); its text
+// for most of its particles, so a warning keeps only the number it reports (24 bytes); its text
 // is made when something shows it.
 #pragma once
 

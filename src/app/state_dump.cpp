@@ -121,8 +121,8 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
         live = nlohmann::json::array();
         for (std::size_t v = 0; v < s.experiment->variant_count(); ++v) {
             const VariantMetrics m = metrics_of(s.history->trackers[v], s.experiment->run(v));
-            live.push_back(selected < m.particles.size() ? nlohmann::json(cli::particle_metrics_json(m.particles[selected]))
-                                                         : nlohmann::json(nullptr));
+            if (selected >= m.particles.size()) live.push_back(nullptr);
+            else live.push_back(nlohmann::json(cli::particle_metrics_json(m.particles[selected])));
         }
     }
     j["live_metrics"] = live;
