@@ -170,13 +170,17 @@ void sample_aggregates(PlotHistory& h, const Experiment& e, double t) {
         l.residual.push(t, total.residual());
         if (!h.aggregated() || st.size() == 0) continue;
         const double floor_y = m.room.floor_y();
-        double sum_h = 0.0, lo = INFINITY, hi = -INFINITY, sum_speed = 0.0;
+        double sum_h = 0.0, lo = INFINITY, hi = -INFINITY;
+        double sum_speed = 0.0, slowest = INFINITY, fastest = 0.0;
         for (std::size_t i = 0; i < st.size(); ++i) {
             const double height = st.y[i] - floor_y;
             sum_h += height;
             lo = std::min(lo, height);
             hi = std::max(hi, height);
-            sum_speed += std::sqrt(st.vx[i] * st.vx[i] + st.vy[i] * st.vy[i] + st.vz[i] * st.vz[i]);
+            const double speed = std::sqrt(st.vx[i] * st.vx[i] + st.vy[i] * st.vy[i] + st.vz[i] * st.vz[i]);
+            sum_speed += speed;
+            slowest = std::min(slowest, speed);
+            fastest = std::max(fastest, speed);
         }
         const double n = static_cast<double>(st.size());
         AggregateTrack& a = track.aggregate;
@@ -184,6 +188,8 @@ void sample_aggregates(PlotHistory& h, const Experiment& e, double t) {
         a.height_min.push(t, lo);
         a.height_max.push(t, hi);
         a.speed_mean.push(t, sum_speed / n);
+        a.speed_min.push(t, slowest);
+        a.speed_max.push(t, fastest);
         a.kinetic_total.push(t, total.kinetic);
     }
 }

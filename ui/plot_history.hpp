@@ -95,7 +95,7 @@ struct ParticleTrack {
 
 // With many particles the plots show aggregates instead of one line each.
 struct AggregateTrack {
-    SampleSeries height_mean, height_min, height_max, speed_mean, kinetic_total;
+    SampleSeries height_mean, height_min, height_max, speed_mean, speed_min, speed_max, kinetic_total;
 };
 
 // Energy ledger of a whole variant (sums over its particles), J.
@@ -150,7 +150,7 @@ struct PlotHistory {
     void reset(std::size_t variant_count, std::size_t particle_count_) {
         particle_count = particle_count_;
         const std::size_t tracked = std::min(particle_count, max_tracked_particles);
-        const std::size_t series_per_variant = 3 * tracked + 5 + 7;
+        const std::size_t series_per_variant = 3 * tracked + 7 + 7;
         const std::size_t series = std::max<std::size_t>(1, variant_count * series_per_variant);
         const std::size_t capacity = std::clamp(sample_budget / series, std::size_t{1024}, max_series_capacity);
         variants.assign(variant_count, VariantTrack{});
@@ -159,7 +159,8 @@ struct PlotHistory {
             for (ParticleTrack& p : v.particles)
                 for (SampleSeries* s : {&p.height, &p.speed, &p.kinetic}) s->set_capacity(capacity);
             AggregateTrack& a = v.aggregate;
-            for (SampleSeries* s : {&a.height_mean, &a.height_min, &a.height_max, &a.speed_mean, &a.kinetic_total})
+            for (SampleSeries* s : {&a.height_mean, &a.height_min, &a.height_max, &a.speed_mean, &a.speed_min,
+                                    &a.speed_max, &a.kinetic_total})
                 s->set_capacity(capacity);
             LedgerTrack& l = v.ledger;
             for (SampleSeries* s : {&l.kinetic, &l.potential, &l.bounce, &l.friction, &l.drag, &l.wind_work, &l.residual})

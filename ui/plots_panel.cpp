@@ -68,7 +68,10 @@ MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
             out.lines[0].push_back({name + "##mean", &a.height_mean, c, 2.0f});
             out.lines[0].push_back({name + "##min", &a.height_min, faint, 1.0f});
             out.lines[0].push_back({name + "##max", &a.height_max, faint, 1.0f});
-            out.lines[1].push_back({name, &a.speed_mean, c, 2.0f});
+            out.bands[1].push_back({name + "##range", &a.speed_min, &a.speed_max, shade});
+            out.lines[1].push_back({name + "##mean", &a.speed_mean, c, 2.0f});
+            out.lines[1].push_back({name + "##min", &a.speed_min, faint, 1.0f});
+            out.lines[1].push_back({name + "##max", &a.speed_max, faint, 1.0f});
             out.lines[2].push_back({name, &a.kinetic_total, c, 2.0f});
         }
         return out;
@@ -180,7 +183,7 @@ void motion_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
     static const char* ids[3] = {"##height", "##speed", "##kinetic"};
     static const char* names[3] = {"height", "speed", "kinetic"};
     const char* y_labels[3] = {ms.aggregated ? "height: mean, min-max range (m)" : "height (m)",
-                               ms.aggregated ? "mean speed (m/s)" : "speed (m/s)",
+                               ms.aggregated ? "speed: mean, min-max range (m/s)" : "speed (m/s)",
                                ms.aggregated ? "total kinetic energy (J)" : "kinetic energy (J)"};
     const float spacing = ImGui::GetStyle().ItemSpacing.y;
     const float avail = ImGui::GetContentRegionAvail().y;
