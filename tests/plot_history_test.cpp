@@ -74,7 +74,15 @@ TEST(PlotHistory, SpreadsTheSampleBudgetOverAllSeries) {
     std::size_t total_capacity = 0;
     for (const VariantTrack& v : h.variants) {
         for (const ParticleTrack& p : v.particles) total_capacity += p.height.capacity() + p.speed.capacity() + p.kinetic.capacity();
-        total_capacity += 7 * v.aggregate.height_mean.capacity() + 7 * v.ledger.kinetic.capacity();
+        // Every aggregate and ledger series, by name (a series left out of all() has no capacity set).
+        const AggregateTrack& a = v.aggregate;
+        for (const SampleSeries* s : {&a.height_mean, &a.height_min, &a.height_max, &a.speed_mean, &a.speed_min,
+                                      &a.speed_max, &a.kinetic_total})
+            total_capacity += s->capacity();
+        const LedgerTrack& l = v.ledger;
+        for (const SampleSeries* s :
+             {&l.kinetic, &l.potential, &l.bounce, &l.friction, &l.drag, &l.wind_work, &l.residual})
+            total_capacity += s->capacity();
     }
     EXPECT_LE(total_capacity, PlotHistory::sample_budget + 8 * 8 * 62);  // rounding up to multiples of 8
     h.reset(1, 1);  // few series: each can hold 100k points for smooth long plots

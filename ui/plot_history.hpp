@@ -8,9 +8,12 @@
 #include "physics/metrics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace pl::ui {
@@ -88,20 +91,31 @@ private:
     std::vector<double> t_, v_;
 };
 
+// Each track's `all()` lists its series, so that the sample budget counts and sizes exactly these.
+
 // What the plots show for one particle of one variant.
 struct ParticleTrack {
     SampleSeries height, speed, kinetic;
+    auto all() { return std::array{&height, &speed, &kinetic}; }
 };
 
 // With many particles the plots show aggregates instead of one line each.
 struct AggregateTrack {
     SampleSeries height_mean, height_min, height_max, speed_mean, speed_min, speed_max, kinetic_total;
+    auto all() {
+        return std::array{&height_mean, &height_min, &height_max, &speed_mean, &speed_min, &speed_max, &kinetic_total};
+    }
 };
 
 // Energy ledger of a whole variant (sums over its particles), J.
 struct LedgerTrack {
     SampleSeries kinetic, potential, bounce, friction, drag, wind_work, residual;
+    auto all() { return std::array{&kinetic, &potential, &bounce, &friction, &drag, &wind_work, &residual}; }
 };
+
+// How many series a track of type T has.
+template <class T>
+constexpr std::size_t series_count = std::tuple_size_v<decltype(std::declval<T&>().all())>;
 
 struct VariantTrack {
     std::vector<ParticleTrack> particles;  // the first PlotHistory::max_tracked_particles
@@ -150,21 +164,17 @@ struct PlotHistory {
     void reset(std::size_t variant_count, std::size_t particle_count_) {
         particle_count = particle_count_;
         const std::size_t tracked = std::min(particle_count, max_tracked_particles);
-        const std::size_t series_per_variant = 3 * tracked + 7 + 7;
+        const std::size_t series_per_variant =
+            series_count<ParticleTrack> * tracked + series_count<AggregateTrack> + series_count<LedgerTrack>;
         const std::size_t series = std::max<std::size_t>(1, variant_count * series_per_variant);
         const std::size_t capacity = std::clamp(sample_budget / series, std::size_t{1024}, max_series_capacity);
         variants.assign(variant_count, VariantTrack{});
         for (VariantTrack& v : variants) {
             v.particles.resize(tracked);
             for (ParticleTrack& p : v.particles)
-                for (SampleSeries* s : {&p.height, &p.speed, &p.kinetic}) s->set_capacity(capacity);
-            AggregateTrack& a = v.aggregate;
-            for (SampleSeries* s : {&a.height_mean, &a.height_min, &a.height_max, &a.speed_mean, &a.speed_min,
-                                    &a.speed_max, &a.kinetic_total})
-                s->set_capacity(capacity);
-            LedgerTrack& l = v.ledger;
-            for (SampleSeries* s : {&l.kinetic, &l.potential, &l.bounce, &l.friction, &l.drag, &l.wind_work, &l.residual})
-                s->set_capacity(capacity);
+                for (SampleSeries* s : p.all()) s->set_capacity(capacity);
+            for (SampleSeries* s : v.aggregate.all()) s->set_capacity(capacity);
+            for (SampleSeries* s : v.ledger.all()) s->set_capacity(capacity);
         }
         events.clear();
         events_dropped = 0;
