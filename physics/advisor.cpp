@@ -86,10 +86,10 @@ Observed observe(const Model& model, const std::vector<ParticleSpec>& particles,
             if (!o.run.landing[i]) o.run.apex_height[i] = std::max(o.run.apex_height[i], sim.state().y[i] - floor_y);
     }
     if (measure_numbers && model.drag.model != DragModel::none) {
-        for (std::size_t i = 0; i < n; ++i) {
-            if (sim.max_reynolds(i) <= 0.0) continue;
-            o.re_min = std::min(o.re_min, sim.min_reynolds(i));
-            o.re_max = std::max(o.re_max, sim.max_reynolds(i));
+        const ReRange seen = sim.observed_reynolds();
+        if (seen.hi > 0.0) {
+            o.re_min = std::min(o.re_min, seen.lo);
+            o.re_max = std::max(o.re_max, seen.hi);
         }
     }
     o.end_position.resize(n);

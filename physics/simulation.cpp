@@ -96,10 +96,6 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
         return p.mass == particles.front().mass && p.radius == particles.front().radius;
     });  // drag coefficients are functions of mass and radius
     warned_.assign(particles.size(), 0);
-    if (model_.drag.model != DragModel::none) {
-        re_min_.assign(particles.size(), INFINITY);
-        re_max_.assign(particles.size(), 0.0);
-    }
     if (model_.integrator.method == Method::dopri5) adaptive_step_hint_.assign(particles.size(), 0.0);
     kernel_ = pick_kernel(model_, kernel_choice_);
     monitor();
@@ -176,6 +172,11 @@ Vec3 Simulation::acceleration(std::size_t i) const {
     return a - rate * u;
 }
 
+double Simulation::reynolds_number(std::size_t i) const {
+    if (model_.drag.model == DragModel::none) return 0.0;
+    return state_.drag_re_scale[i] * glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
+}
+
 std::vector<Event> Simulation::drain_events() {
     std::vector<Event> out;
     out.swap(events_);
@@ -184,11 +185,6 @@ std::vector<Event> Simulation::drain_events() {
     // event in a large scene).
     events_.reserve(out.size());
     return out;
-}
-
-void Simulation::record_reynolds(std::size_t i, double re) {
-    re_min_[i] = std::min(re_min_[i], re);
-    re_max_[i] = std::max(re_max_[i], re);
 }
 
 void Simulation::raise(WarningKind kind, std::uint32_t particle, double value) {

@@ -3,12 +3,14 @@
 // enable (drag, wind) are compiled out of the stepping kernel and never evaluated.
 #pragma once
 
+#include "drag.hpp"
 #include "events.hpp"
 #include "particle_state.hpp"
 #include "scene.hpp"
 #include "warnings.hpp"
 #include "wind.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,6 +30,7 @@ struct ForceCounters {
 // particle order, the particles that crossed a limit they have not been warned about yet.
 struct MonitorScan {
     double max_stiffness = 0.0;
+    ReRange reynolds{INFINITY, 0.0};  // of the particles in flight; empty (lo > hi) if none moved
     std::vector<std::uint32_t> suspects;
 };
 
@@ -78,6 +81,8 @@ public:
     void set_velocity(std::size_t i, const Vec3& v);
     // Net acceleration a particle feels at its current state (no contact forces).
     Vec3 acceleration(std::size_t i) const;
+    // Reynolds number of a particle's motion relative to the air now (0 without drag).
+    double reynolds_number(std::size_t i) const;
 
     // Events since the last drain (the simulation appends; consumers take them).
     const std::vector<Event>& events() const { return events_; }
@@ -88,9 +93,9 @@ public:
     const std::vector<Warning>& warnings() const { return warnings_; }
     const ForceCounters& counters() const { return counters_; }
 
-    // Observed Re range per particle (only tracked when drag is on).
-    double min_reynolds(std::size_t i) const { return re_min_.empty() ? 0.0 : re_min_[i]; }
-    double max_reynolds(std::size_t i) const { return re_max_.empty() ? 0.0 : re_max_[i]; }
+    // Reynolds numbers the monitor has seen (at its samples, over every particle in flight or
+    // sliding, not resting or frozen); lo > hi while none has moved, and without drag.
+    ReRange observed_reynolds() const { return reynolds_; }
     // Largest drag stiffness k (1/s) seen so far, over all particles.
     double max_drag_stiffness() const { return max_stiffness_; }
 
@@ -98,7 +103,6 @@ public:
     ParticleState& mutable_state() { return state_; }
     std::vector<Event>& event_sink() { return events_; }
     ForceCounters& mutable_counters() { return counters_; }
-    void record_reynolds(std::size_t i, double re);
     // Ends one step of a kernel call: the step counter and the cap on undrained events.
     void finish_step();
     // Records a warning at time() unless this particle had one of this kind already.
@@ -121,7 +125,7 @@ private:
     std::vector<Warning> warnings_;
     std::vector<std::uint8_t> warned_;  // per particle: bit per WarningKind
     ForceCounters counters_;
-    std::vector<double> re_min_, re_max_;
+    ReRange reynolds_{INFINITY, 0.0};
     double max_stiffness_ = 0.0;
     std::vector<MonitorScan> scans_;  // one per particle range, kept from sample to sample
     std::vector<double> adaptive_step_hint_;  // dopri5: last accepted internal step per particle

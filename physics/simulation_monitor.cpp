@@ -1,5 +1,5 @@
 // Simulation::monitor: the checks after a step (drag validity range, Mach number, stability of
-// the explicit methods against the drag stiffness) and the observed Reynolds range per particle.
+// the explicit methods against the drag stiffness) and the Reynolds range observed over the scene.
 // Two passes: a branch-free scan over the state arrays (vectorised, split over the threads like
 // the kernel) finds the particles that need a warning; the warnings are then raised in particle
 // order, so the result does not depend on the thread count.
@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 namespace pl {
 
@@ -32,10 +33,10 @@ double stiffness(double k, double re_scale, double u) {
     else return drag_stiffness(Drag, {k, re_scale}, u);
 }
 
-template <DragModel Drag, bool HasWind>
+// Identical: every particle has the drag constants of particle 0 (read once, not streamed).
+template <DragModel Drag, bool HasWind, bool Identical>
 void scan(const ParticleState& s, const WindField& wind, double t, const MonitorLimits& lim,
-          const std::uint8_t* warned, double* re_min, double* re_max, std::size_t begin, std::size_t end,
-          MonitorScan& out) {
+          const std::uint8_t* warned, std::size_t begin, std::size_t end, MonitorScan& out) {
     constexpr std::size_t chunk = 256;
     // 64-bit lanes (a byte-sized value would make GCC take 64 particles per vector iteration).
     std::int64_t skip[chunk], unwarned[chunk], suspect[chunk];
@@ -63,22 +64,27 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
         const double* const vz = s.vz.data() + c;
         const double* const drag_k = s.drag_k.data() + c;
         const double* const re_scale = s.drag_re_scale.data() + c;
-        double* const lo = re_min + c;
-        double* const hi = re_max + c;
-        // The largest stiffness as the largest bit pattern: for doubles >= 0 the order is the
-        // same, and an integer max reduction vectorises where a floating-point one does not.
+        const double k0 = s.drag_k[0], re_scale0 = s.drag_re_scale[0];
+        // Minima and maxima of doubles >= 0 as those of their bit patterns: the order is the
+        // same, and an integer reduction vectorises where a floating-point one does not.
         std::int64_t max_k = std::bit_cast<std::int64_t>(out.max_stiffness);
-        // The Reynolds ranges are the only arrays written, and no other pointer reaches them.
-#pragma GCC ivdep
+        std::int64_t re_lo = std::bit_cast<std::int64_t>(out.reynolds.lo);
+        std::int64_t re_hi = std::bit_cast<std::int64_t>(out.reynolds.hi);
+        constexpr std::int64_t infinity_bits = std::bit_cast<std::int64_t>(std::numeric_limits<double>::infinity());
         for (std::size_t j = 0; j < n; ++j) {
             const double ux = vx[j] - wx[j], uy = vy[j] - wy[j], uz = vz[j] - wz[j];
             const double u = std::sqrt(ux * ux + uy * uy + uz * uz);
-            const double re = re_scale[j] * u;
+            const double scale = Identical ? re_scale0 : re_scale[j];
+            const double re = scale * u;
             const bool moving = (skip[j] == 0) & (u > 0.0);
-            const double seen_lo = lo[j], seen_hi = hi[j];
-            lo[j] = moving & (re < seen_lo) ? re : seen_lo;
-            hi[j] = moving & (re > seen_hi) ? re : seen_hi;
-            const double k = stiffness<Drag>(drag_k[j], re_scale[j], u);
+            const std::int64_t re_bits = std::bit_cast<std::int64_t>(re);
+            // `moving` as a mask of all ones: GCC leaves a select here as a branch, which does not vectorise.
+            const std::int64_t in = -static_cast<std::int64_t>(moving);
+            const std::int64_t lo_bits = (re_bits & in) | (infinity_bits & ~in);
+            const std::int64_t hi_bits = re_bits & in;
+            re_lo = lo_bits < re_lo ? lo_bits : re_lo;
+            re_hi = hi_bits > re_hi ? hi_bits : re_hi;
+            const double k = stiffness<Drag>(Identical ? k0 : drag_k[j], scale, u);
             const std::int64_t k_bits = skip[j] == 0 ? std::bit_cast<std::int64_t>(k) : 0;
             max_k = k_bits > max_k ? k_bits : max_k;
             // Only what the particle has not been warned about yet.
@@ -88,24 +94,30 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
             suspect[j] = (invalid | fast | unstable) & unwarned[j];
         }
         out.max_stiffness = std::bit_cast<double>(max_k);
+        out.reynolds = {std::bit_cast<double>(re_lo), std::bit_cast<double>(re_hi)};
         for (std::size_t j = 0; j < n; ++j)
             if (suspect[j]) out.suspects.push_back(static_cast<std::uint32_t>(c + j));
     }
 }
 
 using ScanFn = void (*)(const ParticleState&, const WindField&, double, const MonitorLimits&, const std::uint8_t*,
-                        double*, double*, std::size_t, std::size_t, MonitorScan&);
+                        std::size_t, std::size_t, MonitorScan&);
 
-template <DragModel Drag>
-ScanFn pick_scan(bool wind) {
-    return wind ? &scan<Drag, true> : &scan<Drag, false>;
+template <DragModel Drag, bool HasWind>
+ScanFn pick_scan(bool identical) {
+    return identical ? &scan<Drag, HasWind, true> : &scan<Drag, HasWind, false>;
 }
 
-ScanFn pick_scan(DragModel drag, bool wind) {
+template <DragModel Drag>
+ScanFn pick_scan(bool wind, bool identical) {
+    return wind ? pick_scan<Drag, true>(identical) : pick_scan<Drag, false>(identical);
+}
+
+ScanFn pick_scan(DragModel drag, bool wind, bool identical) {
     switch (drag) {
-        case DragModel::linear: return pick_scan<DragModel::linear>(wind);
-        case DragModel::quadratic: return pick_scan<DragModel::quadratic>(wind);
-        case DragModel::sphere_re: return pick_scan<DragModel::sphere_re>(wind);
+        case DragModel::linear: return pick_scan<DragModel::linear>(wind, identical);
+        case DragModel::quadratic: return pick_scan<DragModel::quadratic>(wind, identical);
+        case DragModel::sphere_re: return pick_scan<DragModel::sphere_re>(wind, identical);
         case DragModel::none: break;
     }
     return nullptr;
@@ -125,23 +137,26 @@ void Simulation::monitor() {
     const ReRange valid = drag_validity(model_.drag.model);
     const double limit = method_stability_limit(model_.integrator.method);
     const MonitorLimits lim{valid, dt(), limit};
-    const ScanFn scan_range = pick_scan(model_.drag.model, wind_.kind() != WindKind::none);
+    const ScanFn scan_range = pick_scan(model_.drag.model, wind_.kind() != WindKind::none, identical_particles_);
     const std::size_t n = state_.size();
     const std::size_t ranges = particle_ranges(n, threads_);
     scans_.resize(ranges);
     for (MonitorScan& s : scans_) {
         s.max_stiffness = 0.0;
+        s.reynolds = {std::numeric_limits<double>::infinity(), 0.0};
         s.suspects.clear();
     }
     auto task = [&](std::size_t k) {
-        scan_range(state_, wind_, time(), lim, warned_.data(), re_min_.data(), re_max_.data(),
-                   range_begin(n, ranges, k), range_begin(n, ranges, k + 1), scans_[k]);
+        scan_range(state_, wind_, time(), lim, warned_.data(), range_begin(n, ranges, k), range_begin(n, ranges, k + 1),
+                   scans_[k]);
     };
     if (ranges == 1) task(0);
     else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(threads_)), task);
 
     for (const MonitorScan& out : scans_) {
         max_stiffness_ = std::max(max_stiffness_, out.max_stiffness);
+        reynolds_.lo = std::min(reynolds_.lo, out.reynolds.lo);
+        reynolds_.hi = std::max(reynolds_.hi, out.reynolds.hi);
         for (const std::uint32_t i : out.suspects) {
             const double u = glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
             const double re = state_.drag_re_scale[i] * u;

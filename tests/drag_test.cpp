@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -103,6 +104,34 @@ TEST(Drag, WarningsKeepTheirNumberAndSayItOnDemand) {
                   "Mach 0.3)");
     }
     EXPECT_TRUE(mach);
+}
+
+// The monitor keeps the scene's Reynolds range over its samples (every step for a few
+// particles): the smallest and largest Re of any particle in flight, from the start state on.
+TEST(Drag, ObservedReynoldsRangeSpansTheSamples) {
+    const Model m = open_air(quadratic(0.47), Method::semi_implicit_euler, 0.002);
+    Simulation still(m, {{{0, 0, 0}, {0, 0, 0}, 0.057, 0.033}});
+    EXPECT_GT(still.observed_reynolds().lo, still.observed_reynolds().hi);  // nothing has moved yet
+    // A lob whose speed dips at its apex, and a fast horizontal throw.
+    Simulation sim(m, {{{0, 0, 0}, {2, 10, 0}, 0.057, 0.033}, {{0, 0, 0}, {30, 0, 5}, 0.057, 0.033}});
+    double lo = INFINITY, hi = 0.0;
+    auto sample = [&] {
+        for (std::size_t i = 0; i < sim.particle_count(); ++i) {
+            lo = std::min(lo, sim.reynolds_number(i));
+            hi = std::max(hi, sim.reynolds_number(i));
+        }
+    };
+    sample();
+    for (int k = 0; k < 1500; ++k) {
+        sim.step();
+        sample();
+    }
+    EXPECT_DOUBLE_EQ(sim.observed_reynolds().lo, lo);
+    EXPECT_DOUBLE_EQ(sim.observed_reynolds().hi, hi);
+    // Re = speed * 2r / nu: the apex of the lob is slower than its 2 m/s horizontal start.
+    const double re_per_speed = sim.state().drag_re_scale[0];
+    EXPECT_LT(lo, 2.0 * re_per_speed);
+    EXPECT_DOUBLE_EQ(hi, re_per_speed * std::sqrt(30.0 * 30.0 + 5.0 * 5.0));
 }
 
 TEST(Drag, VerticalQuadraticFallFollowsTanh) {

@@ -50,8 +50,13 @@ void draw_inspector_section(LabSession& s) {
         if (st.resting[i] & (1u << w)) walls += std::string(walls.empty() ? "" : ", ") + wall_name(w);
     ImGui::Text("resting on: %s", walls.empty() ? "nothing (in flight)" : walls.c_str());
     if (st.frozen[i]) ImGui::TextColored({1.0f, 0.4f, 0.4f, 1.0f}, "FROZEN: its state became non-finite");
-    if (m.drag.model != DragModel::none)
-        ImGui::Text("Reynolds number seen: %.3g .. %.3g", sim.min_reynolds(i), sim.max_reynolds(i));
+    if (m.drag.model != DragModel::none) {
+        const ReRange seen = sim.observed_reynolds();
+        if (seen.lo <= seen.hi)
+            ImGui::Text("Reynolds number %.3g   (scene so far: %.3g .. %.3g)", sim.reynolds_number(i), seen.lo, seen.hi);
+        else
+            ImGui::Text("Reynolds number %.3g", sim.reynolds_number(i));
+    }
 
     const EnergyBreakdown en = particle_energy(st, i, m.world.gravity, m.room);
     if (ImGui::BeginTable("energy", 2, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
