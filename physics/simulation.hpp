@@ -30,7 +30,7 @@ struct ForceCounters {
 // particle order, the particles that crossed a limit they have not been warned about yet.
 struct MonitorScan {
     double max_stiffness = 0.0;
-    ReRange reynolds{INFINITY, 0.0};  // of the particles in flight; empty (lo > hi) if none moved
+    ReRange reynolds{INFINITY, 0.0};  // of the particles in flight; empty (lo > hi) if none flew
     std::vector<std::uint32_t> suspects;
 };
 
@@ -93,8 +93,8 @@ public:
     const std::vector<Warning>& warnings() const { return warnings_; }
     const ForceCounters& counters() const { return counters_; }
 
-    // Reynolds numbers the monitor has seen (at its samples, over every particle in flight or
-    // sliding, not resting or frozen); lo > hi while none has moved, and without drag.
+    // Reynolds numbers the monitor has seen (at its samples, over the moving particles that are
+    // neither on a wall nor frozen); lo > hi while none has flown, and without drag.
     ReRange observed_reynolds() const { return reynolds_; }
     // Largest drag stiffness k (1/s) seen so far, over all particles.
     double max_drag_stiffness() const { return max_stiffness_; }
