@@ -52,10 +52,9 @@ void draw_inspector_section(LabSession& s) {
     if (st.frozen[i]) ImGui::TextColored({1.0f, 0.4f, 0.4f, 1.0f}, "FROZEN: its state became non-finite");
     if (m.drag.model != DragModel::none) {
         const ReRange seen = sim.observed_reynolds();
-        if (seen.lo <= seen.hi)
-            ImGui::Text("Reynolds number %.3g   (scene so far: %.3g .. %.3g)", sim.reynolds_number(i), seen.lo, seen.hi);
-        else
-            ImGui::Text("Reynolds number %.3g", sim.reynolds_number(i));
+        ImGui::Text("Reynolds number %.3g", sim.reynolds_number(i));
+        // On a line of its own: beside the particle's number it ran past the panel's edge.
+        if (seen.lo <= seen.hi) ImGui::TextDisabled("  scene so far: %.3g .. %.3g", seen.lo, seen.hi);
     }
 
     const EnergyBreakdown en = particle_energy(st, i, m.world.gravity, m.room);
