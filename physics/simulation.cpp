@@ -159,7 +159,7 @@ void Simulation::set_velocity(std::size_t i, const Vec3& v) {
 Vec3 Simulation::acceleration(std::size_t i) const {
     Vec3 a = model_.world.gravity;
     if (model_.drag.model == DragModel::none) return a;
-    const Vec3 u = state_.velocity(i) - wind_.at(state_.position(i), time());
+    const Vec3 u = air_velocity(i);
     const double speed = glm::length(u);
     const DragCoefficients c{state_.drag_k[i], state_.drag_re_scale[i]};
     double rate = 0.0;
@@ -172,9 +172,11 @@ Vec3 Simulation::acceleration(std::size_t i) const {
     return a - rate * u;
 }
 
+Vec3 Simulation::air_velocity(std::size_t i) const { return state_.velocity(i) - wind_.at(state_.position(i), time()); }
+
 double Simulation::reynolds_number(std::size_t i) const {
     if (model_.drag.model == DragModel::none) return 0.0;
-    return state_.drag_re_scale[i] * glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
+    return state_.drag_re_scale[i] * glm::length(air_velocity(i));
 }
 
 std::vector<Event> Simulation::drain_events() {

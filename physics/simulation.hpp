@@ -81,6 +81,8 @@ public:
     void set_velocity(std::size_t i, const Vec3& v);
     // Net acceleration a particle feels at its current state (no contact forces).
     Vec3 acceleration(std::size_t i) const;
+    // A particle's velocity relative to the air at its position now (v - wind).
+    Vec3 air_velocity(std::size_t i) const;
     // Reynolds number of a particle's motion relative to the air now (0 without drag).
     double reynolds_number(std::size_t i) const;
 

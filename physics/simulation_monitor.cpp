@@ -158,7 +158,7 @@ void Simulation::monitor() {
         reynolds_.lo = std::min(reynolds_.lo, out.reynolds.lo);
         reynolds_.hi = std::max(reynolds_.hi, out.reynolds.hi);
         for (const std::uint32_t i : out.suspects) {
-            const double u = glm::length(state_.velocity(i) - wind_.at(state_.position(i), time()));
+            const double u = glm::length(air_velocity(i));
             const double re = state_.drag_re_scale[i] * u;
             if (u > 0.0 && (re < valid.lo || re > valid.hi)) raise(WarningKind::drag_validity, i, re);
             if (u > mach_warning_speed) raise(WarningKind::mach, i, u);
