@@ -1,7 +1,7 @@
 #include "fast_kernel.hpp"
 
-#include "flight_chunk.hpp"
 #include "contact_lanes.hpp"
+#include "flight_chunk.hpp"
 #include "held_lanes.hpp"
 #include "lane_math.hpp"
 #include "particle_stepper.hpp"
@@ -10,8 +10,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace pl {
 
