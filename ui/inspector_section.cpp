@@ -38,7 +38,8 @@ void draw_inspector_section(LabSession& s) {
     const Rgba c = series_color(color_index(v, i, variants));
     ImGui::ColorButton("##c", ImVec4(c[0], c[1], c[2], 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
     ImGui::SameLine();
-    ImGui::Text("particle %zu of %zu  (m = %.4g kg, r = %.4g m)", i, n, st.mass[i], st.radius[i]);
+    ImGui::Text("particle %zu of %zu", i, n);
+    ImGui::Text("mass %.4g kg   radius %.4g m", st.mass[i], st.radius[i]);
     const Vec3 x = st.position(i), vel = st.velocity(i);
     ImGui::Text("position  (%.4f, %.4f, %.4f) m", x.x, x.y, x.z);
     ImGui::Text("velocity  (%.4f, %.4f, %.4f) m/s", vel.x, vel.y, vel.z);
