@@ -4,6 +4,8 @@
 // vectorises it (-fno-math-errno lets sqrt vectorise). All balls of the workload are identical,
 // so the drag constant and the radius are hoisted out of the loop: nothing is read or written
 // but the six state arrays. It keeps no ledger, no events, no resting contact.
+#include "hand_fused.hpp"
+
 #include "physics/fast_kernel.hpp"
 #include "physics/thread_pool.hpp"
 #include "registry.hpp"
@@ -14,22 +16,12 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pl::bench {
 
 namespace {
-
-// On cache-line boundaries, as the engine's state (ParticleState's StateArray).
-struct SoaState {
-    StateArray<double> x, y, z, vx, vy, vz;
-};
-
-struct FusedParams {
-    double h, k, restitution;
-    double gx, gy, gz;
-    double lo_x, lo_y, lo_z, hi_x, hi_y, hi_z;  // where the centre touches each wall
-};
 
 // __restrict on the parameters (GCC ignores it on local pointers) tells the vectoriser the six
 // arrays do not overlap; -fopt-info-vec reports "loop vectorized using 64 byte vectors".
@@ -85,58 +77,62 @@ void fused_steps(SoaState& s, const FusedParams& p, int threads, int steps) {
     ThreadPool::shared().run(ranges, std::min<std::size_t>(ranges, static_cast<std::size_t>(threads)), task);
 }
 
-void load(SoaState& s, const WorkloadScene& scene) {
-    const std::size_t n = scene.particles.size();
-    for (auto* v : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz}) v->resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const ParticleSpec& q = scene.particles[i];
-        s.x[i] = q.position.x;
-        s.y[i] = q.position.y;
-        s.z[i] = q.position.z;
-        s.vx[i] = q.velocity.x;
-        s.vy[i] = q.velocity.y;
-        s.vz[i] = q.velocity.z;
-    }
-}
-
 void run_limit(benchmark::State& state, Workload w, std::size_t n, int threads, int steps = 1) {
-    const WorkloadScene scene = make_workload(w, n);
-    const Model& m = scene.model;
-    const ParticleSpec& ball = scene.particles.front();
-    const double r = ball.radius;
-    const Vec3 lo = m.room.min_corner(), hi = m.room.max_corner();
-    const FusedParams p{m.integrator.dt,
-                        workload_drag_constant(m, ball),
-                        m.contact.restitution,
-                        m.world.gravity.x,
-                        m.world.gravity.y,
-                        m.world.gravity.z,
-                        lo.x + r,
-                        lo.y + r,
-                        lo.z + r,
-                        hi.x - r,
-                        hi.y - r,
-                        hi.z - r};
-    SoaState s;
-    load(s, scene);
+    FusedLimit limit(make_workload(w, n));
     int taken = 0;
     for (auto _ : state) {
         if (taken + steps > steps_per_window) {
             state.PauseTiming();
-            load(s, scene);
+            limit.reload();
             taken = 0;
             state.ResumeTiming();
         }
-        fused_steps(s, p, threads, steps);
+        limit.step(threads, steps);
         taken += steps;
     }
-    benchmark::DoNotOptimize(s.x.data());
+    benchmark::DoNotOptimize(limit.positions());
     state.counters[rate_counter] = benchmark::Counter(
         static_cast<double>(state.iterations()) * static_cast<double>(steps) * static_cast<double>(n),
         benchmark::Counter::kIsRate);
 }
 
 }  // namespace
+
+FusedLimit::FusedLimit(WorkloadScene scene) : scene_(std::move(scene)) {
+    const Model& m = scene_.model;
+    const ParticleSpec& ball = scene_.particles.front();
+    const double r = ball.radius;
+    const Vec3 lo = m.room.min_corner(), hi = m.room.max_corner();
+    params_ = {m.integrator.dt,
+               workload_drag_constant(m, ball),
+               m.contact.restitution,
+               m.world.gravity.x,
+               m.world.gravity.y,
+               m.world.gravity.z,
+               lo.x + r,
+               lo.y + r,
+               lo.z + r,
+               hi.x - r,
+               hi.y - r,
+               hi.z - r};
+    reload();
+}
+
+void FusedLimit::reload() {
+    const std::size_t n = scene_.particles.size();
+    for (auto* v : {&s_.x, &s_.y, &s_.z, &s_.vx, &s_.vy, &s_.vz}) v->resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const ParticleSpec& q = scene_.particles[i];
+        s_.x[i] = q.position.x;
+        s_.y[i] = q.position.y;
+        s_.z[i] = q.position.z;
+        s_.vx[i] = q.velocity.x;
+        s_.vy[i] = q.velocity.y;
+        s_.vz[i] = q.velocity.z;
+    }
+}
+
+void FusedLimit::step(int threads, int steps) { fused_steps(s_, params_, threads, steps); }
 
 void register_limit_benchmarks() {
     for (Workload w : {Workload::drag_walls, Workload::drag_open})

@@ -23,7 +23,8 @@ struct Measured {
     std::vector<double> rates;            // particle-steps per second of wall time, one per repetition
     std::vector<double> cpu_rates;        // the same per second of this process's CPU time
     std::vector<double> seconds_per_run;  // wall time per iteration
-    std::map<std::string, double> counters;
+    std::map<std::string, double> counters;                    // of the last repetition
+    std::map<std::string, std::vector<double>> counter_runs;  // every repetition's
 };
 
 double median(std::vector<double> v) {
@@ -52,7 +53,10 @@ public:
                 single_thread_real_ += r.real_accumulated_time;
             }
             m.seconds_per_run.push_back(r.real_accumulated_time / static_cast<double>(r.iterations));
-            for (const auto& [name, counter] : r.counters) m.counters[name] = counter.value;
+            for (const auto& [name, counter] : r.counters) {
+                m.counters[name] = counter.value;
+                m.counter_runs[name].push_back(counter.value);
+            }
         }
     }
 
@@ -69,6 +73,14 @@ public:
     // CPU time over wall time of the single-threaded runs: below 1 when other processes
     // competed for the cores while the benchmarks ran.
     double cpu_share() const { return single_thread_real_ > 0.0 ? single_thread_cpu_ / single_thread_real_ : 1.0; }
+    // Median over the repetitions of a benchmark's counter `key`.
+    std::optional<double> counter(const std::string& name, const std::string& key) const {
+        const auto it = results_.find(name);
+        if (it == results_.end()) return std::nullopt;
+        const auto c = it->second.counter_runs.find(key);
+        if (c == it->second.counter_runs.end() || c->second.empty()) return std::nullopt;
+        return median(c->second);
+    }
     const Measured* find(const std::string& name) const {
         const auto it = results_.find(name);
         return it == results_.end() ? nullptr : &it->second;
@@ -173,6 +185,33 @@ void print_steps(const CollectingReporter& r, int all_threads) {
                    ratio_text(e32, b32), rate_text(e32_all), ratio_text(e32_all, e32, "x"), rate_text(b32_all),
                    ratio_text(b32_all, b32, "x"));
     }
+}
+
+// The engine and the limit timed in turn, window by window, in one benchmark (paired_bench.cpp):
+// the ratio from the same moments of the machine.
+void print_paired(const CollectingReporter& r) {
+    auto name = [](int steps, std::size_t n) {
+        return "paired/drag_walls/steps:" + std::to_string(steps) + "/n:" + size_label(n) + "/threads:1";
+    };
+    bool any = false;
+    for (int steps : {1, 32})
+        for (std::size_t n : sizes) any = any || r.counter(name(steps, n), "engine/limit");
+    if (!any) return;
+    fmt::print("\n## Engine and limit timed in turn: gravity + quadratic drag + six walls (1 thread)\n\n");
+    fmt::print("Each iteration runs the engine (Simulation::step_n) through {} steps from the initial particles, "
+               "then the hand-fused limit through the same steps, the same number per call (the limit blocked "
+               "like step_n when several): both from the same moments of the machine.\n\n",
+               steps_per_window);
+    fmt::print("| n | steps per call | engine | limit | engine/limit |\n");
+    fmt::print("|---|---|---|---|---|\n");
+    for (int steps : {1, 32})
+        for (std::size_t n : sizes) {
+            const std::string b = name(steps, n);
+            const auto ratio = r.counter(b, "engine/limit");
+            if (!ratio) continue;
+            fmt::print("| {} | {} | {} | {} | {:.2f} |\n", size_label(n), steps, rate_text(r.counter(b, "engine_rate")),
+                       rate_text(r.counter(b, "limit_rate")), *ratio);
+        }
 }
 
 // Where the engine's time goes beside the limit's: flight alone (no wall reached) and with the
@@ -300,6 +339,7 @@ int main(int argc, char** argv) {
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
     register_engine_benchmarks();
     register_limit_benchmarks();
+    register_paired_benchmarks();
     register_baseline_benchmarks();
     register_method_benchmarks();
     register_accuracy_benchmarks();
@@ -308,6 +348,7 @@ int main(int argc, char** argv) {
     const int all_threads = pl::hardware_threads();
     print_comparison(reporter, all_threads);
     print_steps(reporter, all_threads);
+    print_paired(reporter);
     print_gap(reporter, all_threads);
     print_scaling(reporter, all_threads, "Engine by workload (particle-steps/s; ns per particle-step, 1 thread)",
                   "workload", "engine/", {"gravity", "drag_walls", "drag_walls_shear", "drag_rest"});

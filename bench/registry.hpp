@@ -11,6 +11,7 @@ void register_engine_benchmarks();      // engine_bench.cpp
 void register_method_benchmarks();      // engine_bench.cpp
 void register_baseline_benchmarks();    // oo_baseline.cpp
 void register_limit_benchmarks();       // hand_fused.cpp
+void register_paired_benchmarks();      // paired_bench.cpp
 void register_accuracy_benchmarks();    // accuracy_bench.cpp
 
 // Counter every throughput benchmark reports (a rate: particle-steps per second).
