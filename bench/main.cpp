@@ -23,14 +23,20 @@ struct Measured {
     std::vector<double> rates;            // particle-steps per second of wall time, one per repetition
     std::vector<double> cpu_rates;        // the same per second of this process's CPU time
     std::vector<double> seconds_per_run;  // wall time per iteration
-    std::map<std::string, double> counters;                    // of the last repetition
-    std::map<std::string, std::vector<double>> counter_runs;  // every repetition's
+    std::map<std::string, std::vector<double>> counters;  // every repetition's value of each
 };
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Median over the repetitions of a counter the benchmark reported (none: nullopt).
+std::optional<double> counter(const Measured& m, const std::string& key) {
+    const auto it = m.counters.find(key);
+    if (it == m.counters.end() || it->second.empty()) return std::nullopt;
+    return median(it->second);
 }
 
 // Shows the usual console output and keeps every run for the ratio tables.
@@ -53,10 +59,7 @@ public:
                 single_thread_real_ += r.real_accumulated_time;
             }
             m.seconds_per_run.push_back(r.real_accumulated_time / static_cast<double>(r.iterations));
-            for (const auto& [name, counter] : r.counters) {
-                m.counters[name] = counter.value;
-                m.counter_runs[name].push_back(counter.value);
-            }
+            for (const auto& [name, counter] : r.counters) m.counters[name].push_back(counter.value);
         }
     }
 
@@ -76,10 +79,7 @@ public:
     // Median over the repetitions of a benchmark's counter `key`.
     std::optional<double> counter(const std::string& name, const std::string& key) const {
         const auto it = results_.find(name);
-        if (it == results_.end()) return std::nullopt;
-        const auto c = it->second.counter_runs.find(key);
-        if (c == it->second.counter_runs.end() || c->second.empty()) return std::nullopt;
-        return median(c->second);
+        return it == results_.end() ? std::nullopt : pl::bench::counter(it->second, key);
     }
     const Measured* find(const std::string& name) const {
         const auto it = results_.find(name);
@@ -307,10 +307,11 @@ void print_accuracy(const CollectingReporter& r) {
     auto row = [&](const char* label, const Measured* m, bool tolerance) {
         if (!m) return;
         const double t = median(m->seconds_per_run);
-        const std::string setting = tolerance ? fmt::format("rtol = atol = {:.2g}", m->counters.at("tol"))
-                                              : fmt::format("dt = {:.3g} s", m->counters.at("dt_s"));
-        fmt::print("| {} | {} | {:.2g} | {:.0f} | {:.1f} | {} |\n", label, setting, m->counters.at("error_m"),
-                   m->counters.at("force_evals"), 1e6 * t, euler_time > 0 ? fmt::format("{:.2f}", t / euler_time) : "-");
+        const std::string setting = tolerance ? fmt::format("rtol = atol = {:.2g}", counter(*m, "tol").value())
+                                              : fmt::format("dt = {:.3g} s", counter(*m, "dt_s").value());
+        fmt::print("| {} | {} | {:.2g} | {:.0f} | {:.1f} | {} |\n", label, setting, counter(*m, "error_m").value(),
+                   counter(*m, "force_evals").value(), 1e6 * t,
+                   euler_time > 0 ? fmt::format("{:.2f}", t / euler_time) : "-");
     };
     row("semi-implicit Euler, default dt", e2, false);
     row("semi-implicit Euler to 1e-6 m", e6, false);
