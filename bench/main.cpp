@@ -95,6 +95,7 @@ std::string rate_text(std::optional<double> r) { return r ? fmt::format("{:.3g}"
 std::string ratio_text(std::optional<double> a, std::optional<double> b, const char* suffix = "") {
     return a && b ? fmt::format("{:.2f}{}", *a / *b, suffix) : "-";
 }
+std::string speedup_text(std::optional<double> s) { return s ? fmt::format("{:.2f}x", *s) : "-"; }
 
 void print_comparison(const CollectingReporter& r, int all_threads) {
     bool any = false;
@@ -189,28 +190,37 @@ void print_steps(const CollectingReporter& r, int all_threads) {
 
 // The engine and the limit timed in turn, window by window, in one benchmark (paired_bench.cpp):
 // the ratio from the same moments of the machine.
-void print_paired(const CollectingReporter& r) {
-    auto name = [](int steps, std::size_t n) {
-        return "paired/drag_walls/steps:" + std::to_string(steps) + "/n:" + size_label(n) + "/threads:1";
-    };
+void print_paired(const CollectingReporter& r, int all_threads) {
+    auto name = [&](int steps, std::size_t n) { return paired_name(steps, n, all_threads); };
     bool any = false;
     for (int steps : {1, 32})
         for (std::size_t n : sizes) any = any || r.counter(name(steps, n), "engine/limit");
     if (!any) return;
-    fmt::print("\n## Engine and limit timed in turn: gravity + quadratic drag + six walls (1 thread)\n\n");
-    fmt::print("Each iteration runs the engine (Simulation::step_n) through {} steps from the initial particles, "
-               "then the hand-fused limit through the same steps, the same number per call (the limit blocked "
-               "like step_n when several): both from the same moments of the machine.\n\n",
-               steps_per_window);
-    fmt::print("| n | steps per call | engine | limit | engine/limit |\n");
-    fmt::print("|---|---|---|---|---|\n");
+    fmt::print("\n## Engine and limit timed in turn: gravity + quadratic drag + six walls\n\n");
+    fmt::print("Each iteration runs the engine (Simulation::step_n) on one thread through {} steps from the initial "
+               "particles, then the hand-fused limit through the same steps, the same number per call (the limit "
+               "blocked like step_n when several) and the limit with the per-particle drag ledger every engine "
+               "keeps (the room-contact issue's energy ledger; a bound on engine/limit for any engine that keeps "
+               "it){}: all from the same moments of the machine.\n\n",
+               steps_per_window,
+               all_threads > 1 ? fmt::format(", then both again on {} threads", all_threads) : std::string());
+    fmt::print("| n | steps per call | engine | limit | engine/limit | limit with drag ledger / limit |{}\n",
+               all_threads > 1 ? fmt::format(" engine speed-up on {0} threads | limit speed-up on {0} threads |",
+                                             all_threads)
+                               : std::string());
+    fmt::print("|---|---|---|---|---|---|{}\n", all_threads > 1 ? "---|---|" : "");
     for (int steps : {1, 32})
         for (std::size_t n : sizes) {
             const std::string b = name(steps, n);
             const auto ratio = r.counter(b, "engine/limit");
             if (!ratio) continue;
-            fmt::print("| {} | {} | {} | {} | {:.2f} |\n", size_label(n), steps, rate_text(r.counter(b, "engine_rate")),
-                       rate_text(r.counter(b, "limit_rate")), *ratio);
+            fmt::print("| {} | {} | {} | {} | {:.2f} | {} |", size_label(n), steps,
+                       rate_text(r.counter(b, "engine_rate")), rate_text(r.counter(b, "limit_rate")), *ratio,
+                       ratio_text(r.counter(b, "ledger_limit/limit"), 1.0));
+            if (all_threads > 1)
+                fmt::print(" {} | {} |", speedup_text(r.counter(b, "engine_speedup")),
+                           speedup_text(r.counter(b, "limit_speedup")));
+            fmt::print("\n");
         }
 }
 
@@ -349,7 +359,7 @@ int main(int argc, char** argv) {
     const int all_threads = pl::hardware_threads();
     print_comparison(reporter, all_threads);
     print_steps(reporter, all_threads);
-    print_paired(reporter);
+    print_paired(reporter, all_threads);
     print_gap(reporter, all_threads);
     print_scaling(reporter, all_threads, "Engine by workload (particle-steps/s; ns per particle-step, 1 thread)",
                   "workload", "engine/", {"gravity", "drag_walls", "drag_walls_shear", "drag_rest"});

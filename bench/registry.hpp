@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 namespace pl::bench {
 
@@ -12,6 +13,8 @@ void register_method_benchmarks();      // engine_bench.cpp
 void register_baseline_benchmarks();    // oo_baseline.cpp
 void register_limit_benchmarks();       // hand_fused.cpp
 void register_paired_benchmarks();      // paired_bench.cpp
+// "paired/drag_walls/steps:<steps>/n:<n>/threads:<threads>", as registered there.
+std::string paired_name(int steps, std::size_t n, int threads);
 void register_accuracy_benchmarks();    // accuracy_bench.cpp
 
 // Counter every throughput benchmark reports (a rate: particle-steps per second).
