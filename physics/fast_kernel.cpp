@@ -310,6 +310,7 @@ private:
                 else if (route[q] == 1 && sliding.ok[l++]) commit_slide(sliding, l - 1, i);
                 else step_generic(i);
             }
+            apply_deferred();
         } else {
             for (std::size_t q = 0; q < n; ++q) step_generic(pending_[q]);
         }
@@ -325,7 +326,7 @@ private:
         p.y.wind_gain = L.wind_gain[j];
         p.resting = s_.resting[i];
         p.friction_loss = L.friction_loss[j];
-        store_step<Drag, HasWind>(s_, i, p, nullptr, s_.mass[identical_ ? 0 : i]);
+        commit(i, p);
     }
 
     // Writes lane j's bounce back to particle i, as ParticleStepper::advance would have.
@@ -344,7 +345,31 @@ private:
         p.resting = 0;
         p.bounce_loss = L.bounce_loss[j];
         p.friction_loss = L.friction_loss[j];
-        store_step<Drag, HasWind>(s_, i, p, nullptr, s_.mass[identical_ ? 0 : i]);
+        commit(i, p);
+    }
+
+    // store_step for a lane's particle, with the bounce and friction ledger additions kept back
+    // for apply_deferred: the flight never touches those two arrays, so at 1e6 particles each
+    // commit missed twice in the cache and the TLB, in between the lanes' work. Added together
+    // after the batch's commits, the misses overlap (+8% at 1e6 one step per call, measured in
+    // 8 alternating rounds; taking the two additions out altogether gave +11%). Same bits: a
+    // particle is committed once per step, and the batch's additions are applied before its next.
+    void commit(std::uint32_t i, const ParticleStep& p) {
+        const double mass = s_.mass[identical_ ? 0 : i];
+        store_motion<Drag, HasWind>(s_, i, p, nullptr, mass);
+        deferred_[deferred_count_++] = {i, mass * p.bounce_loss, mass * p.friction_loss};
+    }
+
+    // The ledger additions commit() kept back, in commit order.
+    void apply_deferred() {
+        double* const bounce = s_.dissipated_bounce.data();
+        double* const friction = s_.dissipated_friction.data();
+        for (std::size_t q = 0; q < deferred_count_; ++q) {
+            const Deferred& d = deferred_[q];
+            bounce[d.i] += d.bounce;
+            friction[d.i] += d.friction;
+        }
+        deferred_count_ = 0;
     }
 
     // Adds `times` evaluations of the kind `per` counts to the functor's counters, as if the
@@ -388,6 +413,12 @@ private:
     bool streaming_ = false;
     std::uint32_t pending_[contact_batch + fast_chunk];  // flagged particles waiting for phase 2
     std::size_t pending_count_ = 0;
+    struct Deferred {
+        std::uint32_t i;
+        double bounce, friction;  // mass * per-kg loss, as store_step adds them
+    };
+    Deferred deferred_[contact_batch + fast_chunk];  // see commit()
+    std::size_t deferred_count_ = 0;
     ForceCounters per_step_, per_call_;                  // force evaluations in one step, one call
     std::int64_t still_walls_ = -1;                      // see walls_that_hold_still; -1: not yet
     AdaptiveStats adaptive_;

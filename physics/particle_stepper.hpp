@@ -58,20 +58,26 @@ inline ParticleStep load_step(const ParticleState& s, std::size_t i, const std::
     return p;
 }
 
-// Writes a stepped particle back, adding its ledger increments (per-kg losses times `mass`, the
-// particle's mass).
+// store_step without the bounce and friction ledgers (the fast kernel adds those later).
 template <DragModel Drag, bool HasWind>
-void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass) {
+void store_motion(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass) {
     s.set_position(i, p.y.x);
     s.set_velocity(i, p.y.v);
     s.resting[i] = p.resting;
     if (hints) (*hints)[i] = p.step_hint;
-    s.dissipated_bounce[i] += mass * p.bounce_loss;
-    s.dissipated_friction[i] += mass * p.friction_loss;
     if constexpr (Drag != DragModel::none) {
         s.dissipated_drag[i] += mass * p.y.drag_loss;
         if constexpr (HasWind) s.wind_work[i] += mass * p.y.wind_gain;
     }
+}
+
+// Writes a stepped particle back, adding its ledger increments (per-kg losses times `mass`, the
+// particle's mass).
+template <DragModel Drag, bool HasWind>
+void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass) {
+    store_motion<Drag, HasWind>(s, i, p, hints, mass);
+    s.dissipated_bounce[i] += mass * p.bounce_loss;
+    s.dissipated_friction[i] += mass * p.friction_loss;
 }
 
 // Adds what one kernel pass counted (force evaluations, adaptive steps, contact solves).
