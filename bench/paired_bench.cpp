@@ -1,7 +1,8 @@
 // The engine and the hand-fused limit timed in turn within one benchmark, on one thread and on
 // all of them: a window of steps of each, alternately, so that the rates, their ratio and the
-// speed-ups come from the same moments of the machine. The development VM runs a core up to 25% slower for minutes at a time (RESULTS.md),
-// which benchmarks run minutes apart cannot cancel; windows a few milliseconds apart can.
+// speed-ups come from the same moments of the machine. The development VM runs a core up to 25%
+// slower for minutes at a time (RESULTS.md), which benchmarks run minutes apart cannot cancel;
+// windows a few milliseconds apart mostly can.
 #include "hand_fused.hpp"
 #include "registry.hpp"
 #include "workloads.hpp"
@@ -46,11 +47,12 @@ double limit_window(FusedLimit& limit, int threads, int calls, int steps) {
 // One iteration: the engine on one thread through a window of steps_per_window steps from the
 // initial particles and the limit through the same steps, `steps` per call for both, then the
 // limit with the drag ledger (hand_fused.hpp, Bookkeeping) through them on one thread; with
-// threads > 1 then the engine's and the limit's windows on `threads` threads. Each window starts with its state
-// just written (the engine constructed, the limit reloaded), so none finds another's data in the
-// caches. The order of each pair flips from one iteration to the next: the worker thread sleeps
-// through the one-thread windows, and the first multi-threaded window of an iteration pays for
-// waking it. Ratio counters are ratios of summed times, so every window weighs as it lasted.
+// threads > 1 then the engine's and the limit's windows on `threads` threads. Each window starts
+// with its state just written (the engine constructed, the limit reloaded), so none finds
+// another's data in the caches. The order of each pair flips from one iteration to the next: the
+// worker thread sleeps through the one-thread windows, and the first multi-threaded window of an
+// iteration pays for waking it. Ratio counters are ratios of summed times, so every window weighs
+// as it lasted.
 void run_paired(benchmark::State& state, std::size_t n, int steps, int threads) {
     const WorkloadScene scene = make_workload(Workload::drag_walls, n);
     FusedLimit limit(scene), ledger_limit(scene, Bookkeeping::drag_ledger);

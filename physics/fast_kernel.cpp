@@ -351,8 +351,8 @@ private:
     // store_step for a lane's particle, with the bounce and friction ledger additions kept back
     // for apply_deferred: the flight never touches those two arrays, so at 1e6 particles each
     // commit missed twice in the cache and the TLB, in between the lanes' work. Added together
-    // after the batch's commits, the misses overlap (+8% at 1e6 one step per call, measured in
-    // 8 alternating rounds; taking the two additions out altogether gave +11%). Same bits: a
+    // after the batch's commits, the misses overlap (+3-8% at 1e6 one step per call in
+    // alternating rounds; taking the two additions out altogether gave +11%). Same bits: a
     // particle is committed once per step, and the batch's additions are applied before its next.
     void commit(std::uint32_t i, const ParticleStep& p) {
         const double mass = s_.mass[identical_ ? 0 : i];
