@@ -3,7 +3,9 @@
 // semi-implicit Euler, six walls clamped and reflected with selects (no branches), so GCC
 // vectorises it (-fno-math-errno lets sqrt vectorise). All balls of the workload are identical,
 // so the drag constant and the radius are hoisted out of the loop: nothing is read or written
-// but the six state arrays. It keeps no ledger, no events, no resting contact.
+// but the six state arrays. It keeps no ledger, no events, no resting contact; with
+// Bookkeeping::drag_ledger (hand_fused.hpp) it also keeps the per-particle drag ledger, and so
+// reads and writes a seventh array.
 #include "hand_fused.hpp"
 
 #include "physics/fast_kernel.hpp"
