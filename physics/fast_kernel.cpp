@@ -103,27 +103,27 @@ private:
             // makes events, so the results and the order of the events are the same. (A software
             // prefetch of the ledger lines phase 2 writes cost more than it saved: 5% at 1e6.)
             HeldLanes held;
-            LaneMask flagged[fast_chunk];
+            LaneBits flagged[chunk_groups];
             for (std::size_t c = begin; c < end; c += fast_chunk) {
                 const std::size_t c_end = std::min(end, c + fast_chunk), n = c_end - c;
-                const LaneMask* const held_lanes = held.mark(s_, c, c_end);
-                if (held.count() == n && all_held_still(c, c_end, held_lanes)) {
+                held.mark(s_, c, c_end);
+                if (held.count() == n && all_held_still(c, c_end, held.lanes())) {
                     count_evals(per_call_, n);  // the generic slide evaluates the forces once
                     continue;
                 }
                 std::size_t finished = 0;
                 if (held.count() < n) {
-                    finished = flight(c, c_end, held_lanes, flagged);
+                    finished = flight(c, c_end, held, flagged);
                 } else {
-                    std::fill_n(flagged, n, LaneMask{1});  // all held: nothing for phase 1
+                    std::copy_n(held.bits(), chunk_groups, flagged);  // all held: nothing for phase 1
                 }
                 // The slide of a resting particle does not depend on the method (ParticleStepper::
                 // slide), so every fixed-step method takes it.
                 const std::size_t slid =
-                    held.count() >= slide_in_place_from ? slide_chunk(c, c_end, held_lanes, flagged) : 0;
+                    held.count() >= slide_in_place_from ? slide_chunk(c, c_end, held.lanes(), flagged) : 0;
                 fast_ += finished;
                 if (finished + slid == n) continue;
-                for_each_flagged(c, c_end, n - finished - slid, flagged, [this](std::size_t i) {
+                for_each_flagged(c, c_end, flagged, [this](std::size_t i) {
                     pending_[pending_count_++] = static_cast<std::uint32_t>(i);
                 });
                 if (pending_count_ >= contact_batch) contact_phase();
@@ -132,29 +132,12 @@ private:
         }
     }
 
-    // Calls f(particle) for the `count` flagged particles of a chunk, in order. A chunk usually
-    // has one or two, and a look at every flag cost about a tenth of the flight itself, so
-    // groups of 64 flags are ORed together first (a reduction that vectorises), a group with a
-    // flag is narrowed to bytes and read eight bytes per word, and the look stops at the last.
+    // Calls f(particle) for the flagged particles of a chunk, in order.
     template <class Fn>
-    static void for_each_flagged(std::size_t c, std::size_t c_end, std::size_t count, const LaneMask* flagged,
-                                 const Fn& f) {
-        constexpr std::size_t group = 64;
-        const std::size_t n = c_end - c;
-        for (std::size_t g = 0; g < n && count > 0; g += group) {
-            const std::size_t len = std::min(group, n - g);
-            LaneMask any = 0;
-            for (std::size_t j = 0; j < len; ++j) any |= flagged[g + j];
-            if (any == 0) continue;
-            alignas(64) std::uint8_t bytes[group] = {};
-            for (std::size_t j = 0; j < len; ++j) bytes[j] = static_cast<std::uint8_t>(flagged[g + j]);
-            for (std::size_t k = 0; k < len; k += 8) {
-                std::uint64_t word;
-                std::memcpy(&word, bytes + k, sizeof word);
-                for (; word != 0; word &= word - 1, --count)
-                    f(c + g + k + static_cast<std::size_t>(std::countr_zero(word)) / 8);
-            }
-        }
+    static void for_each_flagged(std::size_t c, std::size_t c_end, const LaneBits* flagged, const Fn& f) {
+        for (std::size_t g = 0; g < c_end - c; g += lane_group)
+            for (LaneBits w = flagged[g / lane_group]; w != 0; w &= w - 1)
+                f(c + g + static_cast<std::size_t>(std::countr_zero(w)));
     }
 
     // Particles resting on one wall slide in place, in a vector loop over the chunk, when enough
@@ -162,13 +145,13 @@ private:
     // of gathered particles, without the gather, the scatter and a store_step per particle, which
     // had made a particle-step on the floor ten times as dear as one in flight. Clears the flags
     // of the particles it finished and returns how many.
-    std::size_t slide_chunk(std::size_t c, std::size_t c_end, const LaneMask* held, LaneMask* flagged) {
+    std::size_t slide_chunk(std::size_t c, std::size_t c_end, const LaneMask* held, LaneBits* flagged) {
         return identical_ ? slide_chunk<true>(c, c_end, held, flagged) : slide_chunk<false>(c, c_end, held, flagged);
     }
     // Identical: as for flight_chunk (a load from a per-particle or a shared address does not vectorise).
     template <bool Identical>
     [[gnu::flatten, gnu::noinline]] std::size_t slide_chunk(std::size_t c, std::size_t c_end, const LaneMask* held,
-                                                            LaneMask* flagged) {
+                                                            LaneBits* flagged) {
         const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
         const WindField* const wind = f_.wind;
         const RoomBounds room = room_;
@@ -189,32 +172,37 @@ private:
         const double* const re_scale = s_.drag_re_scale.data();
         const double mass0 = mass[0], radius0 = radius[0], k0 = drag_k[0], re_scale0 = re_scale[0];
         std::size_t slid = 0;
+        for (std::size_t g = c; g < c_end; g += lane_group) {
+            const std::size_t g_end = c_end - g < lane_group ? c_end : g + lane_group;
+            LaneBits slid_bits = 0;
 #pragma GCC ivdep
-        for (std::size_t i = c; i < c_end; ++i) {
-            const LaneMask code = held[i - c];
-            // One resting wall (one bit of the low byte) and not frozen (nothing above it).
-            const bool one_wall = (code != 0) & ((code & (code - 1)) == 0) & (code < 0x100);
-            F f;
-            set_forces(f, gx, gy, gz, wind, Identical ? k0 : drag_k[i], Identical ? re_scale0 : re_scale[i], 0.0, 0.0,
-                       0.0);
-            const Slide q = slide_lane(f, room, friction, t0, h, Identical ? radius0 : radius[i], code, px[i], py[i],
-                                       pz[i], vx[i], vy[i], vz[i]);
-            const bool take = one_wall & q.ok;
-            const double m = Identical ? mass0 : mass[i];
-            px[i] = take ? q.x : px[i];
-            py[i] = take ? q.y : py[i];
-            pz[i] = take ? q.z : pz[i];
-            vx[i] = take ? q.vx : vx[i];
-            vy[i] = take ? q.vy : vy[i];
-            vz[i] = take ? q.vz : vz[i];
-            // store_step's ledger increments (its bounce increment, mass * 0, changes nothing).
-            friction_loss[i] = take ? friction_loss[i] + m * q.friction_loss : friction_loss[i];
-            if constexpr (Drag != DragModel::none) {
-                drag_loss[i] = take ? drag_loss[i] + m * q.drag_loss : drag_loss[i];
-                if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + m * q.wind_gain : wind_work[i];
+            for (std::size_t i = g; i < g_end; ++i) {
+                const LaneMask code = held[i - c];
+                // One resting wall (one bit of the low byte) and not frozen (nothing above it).
+                const bool one_wall = (code != 0) & ((code & (code - 1)) == 0) & (code < 0x100);
+                F f;
+                set_forces(f, gx, gy, gz, wind, Identical ? k0 : drag_k[i], Identical ? re_scale0 : re_scale[i], 0.0,
+                           0.0, 0.0);
+                const Slide q = slide_lane(f, room, friction, t0, h, Identical ? radius0 : radius[i], code, px[i],
+                                           py[i], pz[i], vx[i], vy[i], vz[i]);
+                const bool take = one_wall & q.ok;
+                const double m = Identical ? mass0 : mass[i];
+                px[i] = take ? q.x : px[i];
+                py[i] = take ? q.y : py[i];
+                pz[i] = take ? q.z : pz[i];
+                vx[i] = take ? q.vx : vx[i];
+                vy[i] = take ? q.vy : vy[i];
+                vz[i] = take ? q.vz : vz[i];
+                // store_step's ledger increments (its bounce increment, mass * 0, changes nothing).
+                friction_loss[i] = take ? friction_loss[i] + m * q.friction_loss : friction_loss[i];
+                if constexpr (Drag != DragModel::none) {
+                    drag_loss[i] = take ? drag_loss[i] + m * q.drag_loss : drag_loss[i];
+                    if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + m * q.wind_gain : wind_work[i];
+                }
+                slid_bits |= LaneBits{take} << (i - g);
             }
-            flagged[i - c] = take ? 0 : flagged[i - c];
-            slid += take;
+            flagged[(g - c) / lane_group] &= ~slid_bits;
+            slid += static_cast<std::size_t>(std::popcount(slid_bits));
         }
         count_evals(per_call_, slid);  // the forces at the step start, once per slide
         return slid;
@@ -267,13 +255,16 @@ private:
         return moving == 0;
     }
 
-    std::size_t flight(std::size_t c, std::size_t c_end, const LaneMask* blocked, LaneMask* flags) {
-        if (identical_) {
-            return streaming_ ? flight_chunk<M, Drag, HasWind, true, true>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags)
-                                : flight_chunk<M, Drag, HasWind, true, false>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags);
+    // Phase 1 of a chunk: from memory it reads the held particles as bits, in cache as lanes.
+    std::size_t flight(std::size_t c, std::size_t c_end, HeldLanes& held, LaneBits* flags) {
+        const LaneBits* const bits = held.bits();
+        if (streaming_) {
+            return identical_ ? flight_chunk<M, Drag, HasWind, true, true>(s_, c, c_end, f_, room_, t0_, h_, bits, nullptr, flags)
+                              : flight_chunk<M, Drag, HasWind, false, true>(s_, c, c_end, f_, room_, t0_, h_, bits, nullptr, flags);
         }
-        return streaming_ ? flight_chunk<M, Drag, HasWind, false, true>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags)
-                            : flight_chunk<M, Drag, HasWind, false, false>(s_, c, c_end, f_, room_, t0_, h_, blocked, flags);
+        const LaneMask* const lanes = held.lanes();
+        return identical_ ? flight_chunk<M, Drag, HasWind, true, false>(s_, c, c_end, f_, room_, t0_, h_, bits, lanes, flags)
+                          : flight_chunk<M, Drag, HasWind, false, false>(s_, c, c_end, f_, room_, t0_, h_, bits, lanes, flags);
     }
 
     // Phase 2 for the pending particles, in order: for methods whose position is a polynomial in
