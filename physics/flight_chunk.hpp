@@ -186,8 +186,8 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
     if constexpr (WholeVectors) {
         // From memory: the flags of a group of 64 ORed into a word in the loop, the held marks
         // read from a word. GCC then takes 16 particles per iteration and sets each group up
-        // anew, which costs 15-20% in cache; at 1e6 particles the engine gained 6-9% (paired
-        // runs, bench/RESULTS.md) over 64-bit lanes in and out.
+        // anew, which costs 12-23% in cache; at 1e6 particles, one step per call, engine/limit
+        // rose 6-7% (paired runs, bench/RESULTS.md) over 64-bit lanes in and out.
         for (std::size_t g = begin; g < end; g += lane_group) {
             const std::size_t g_end = end - g < lane_group ? end : g + lane_group;
             const LaneBits held = held_bits[(g - begin) / lane_group];
