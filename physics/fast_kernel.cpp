@@ -115,7 +115,7 @@ private:
                 if (held.count() < n) {
                     finished = flight(c, c_end, held, flagged);
                 } else {
-                    std::copy_n(held.bits(), chunk_groups, flagged);  // all held: nothing for phase 1
+                    std::copy_n(held.bits(), (n + lane_group - 1) / lane_group, flagged);  // all held: no phase 1
                 }
                 // The slide of a resting particle does not depend on the method (ParticleStepper::
                 // slide), so every fixed-step method takes it.
