@@ -91,8 +91,9 @@ void set_forces(KnownWindForces<Drag>& f, double gx, double gy, double gz, const
 // Phase 1 for particles [begin, end), at most fast_chunk of them: see fast_kernel.hpp. Sets bit
 // j of flagged[k] for particle begin + 64 k + j where it leaves the particle for phase 2 (and
 // clears the others); returns the number of particles it finished. The held particles (resting
-// or frozen, left alone) come as the same bits, and in cache also as lanes (HeldLanes). Identical: every particle has the mass, radius
-// and drag constants of particle 0, so they are read once instead of streamed per particle.
+// or frozen, left alone) come as the same bits (read when WholeVectors) and as lanes (read
+// otherwise; see HeldLanes). Identical: every particle has the mass, radius and drag constants
+// of particle 0, so they are read once instead of streamed per particle.
 // WholeVectors: the state is written back in whole vectors (old values where a particle is
 // left for phase 2) instead of masked stores. Measured on the development machine (AVX-512,
 // bench/RESULTS.md): masked stores are faster while the state is in cache, whole vectors when it
