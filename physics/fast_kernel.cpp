@@ -171,39 +171,36 @@ private:
         const double* const drag_k = s_.drag_k.data();
         const double* const re_scale = s_.drag_re_scale.data();
         const double mass0 = mass[0], radius0 = radius[0], k0 = drag_k[0], re_scale0 = re_scale[0];
-        std::size_t slid = 0;
-        for (std::size_t g = c; g < c_end; g += lane_group) {
-            const std::size_t g_end = c_end - g < lane_group ? c_end : g + lane_group;
-            LaneBits slid_bits = 0;
+        LaneMask slid_lanes[fast_chunk];
 #pragma GCC ivdep
-            for (std::size_t i = g; i < g_end; ++i) {
-                const LaneMask code = held[i - c];
-                // One resting wall (one bit of the low byte) and not frozen (nothing above it).
-                const bool one_wall = (code != 0) & ((code & (code - 1)) == 0) & (code < 0x100);
-                F f;
-                set_forces(f, gx, gy, gz, wind, Identical ? k0 : drag_k[i], Identical ? re_scale0 : re_scale[i], 0.0,
-                           0.0, 0.0);
-                const Slide q = slide_lane(f, room, friction, t0, h, Identical ? radius0 : radius[i], code, px[i],
-                                           py[i], pz[i], vx[i], vy[i], vz[i]);
-                const bool take = one_wall & q.ok;
-                const double m = Identical ? mass0 : mass[i];
-                px[i] = take ? q.x : px[i];
-                py[i] = take ? q.y : py[i];
-                pz[i] = take ? q.z : pz[i];
-                vx[i] = take ? q.vx : vx[i];
-                vy[i] = take ? q.vy : vy[i];
-                vz[i] = take ? q.vz : vz[i];
-                // store_step's ledger increments (its bounce increment, mass * 0, changes nothing).
-                friction_loss[i] = take ? friction_loss[i] + m * q.friction_loss : friction_loss[i];
-                if constexpr (Drag != DragModel::none) {
-                    drag_loss[i] = take ? drag_loss[i] + m * q.drag_loss : drag_loss[i];
-                    if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + m * q.wind_gain : wind_work[i];
-                }
-                slid_bits |= LaneBits{take} << (i - g);
+        for (std::size_t i = c; i < c_end; ++i) {
+            const LaneMask code = held[i - c];
+            // One resting wall (one bit of the low byte) and not frozen (nothing above it).
+            const bool one_wall = (code != 0) & ((code & (code - 1)) == 0) & (code < 0x100);
+            F f;
+            set_forces(f, gx, gy, gz, wind, Identical ? k0 : drag_k[i], Identical ? re_scale0 : re_scale[i], 0.0,
+                       0.0, 0.0);
+            const Slide q = slide_lane(f, room, friction, t0, h, Identical ? radius0 : radius[i], code, px[i],
+                                       py[i], pz[i], vx[i], vy[i], vz[i]);
+            const bool take = one_wall & q.ok;
+            const double m = Identical ? mass0 : mass[i];
+            px[i] = take ? q.x : px[i];
+            py[i] = take ? q.y : py[i];
+            pz[i] = take ? q.z : pz[i];
+            vx[i] = take ? q.vx : vx[i];
+            vy[i] = take ? q.vy : vy[i];
+            vz[i] = take ? q.vz : vz[i];
+            // store_step's ledger increments (its bounce increment, mass * 0, changes nothing).
+            friction_loss[i] = take ? friction_loss[i] + m * q.friction_loss : friction_loss[i];
+            if constexpr (Drag != DragModel::none) {
+                drag_loss[i] = take ? drag_loss[i] + m * q.drag_loss : drag_loss[i];
+                if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + m * q.wind_gain : wind_work[i];
             }
-            flagged[(g - c) / lane_group] &= ~slid_bits;
-            slid += static_cast<std::size_t>(std::popcount(slid_bits));
+            slid_lanes[i - c] = take;
         }
+        LaneBits slid_bits[chunk_groups];
+        const std::size_t slid = pack_lanes(slid_lanes, c_end - c, slid_bits);
+        for (std::size_t g = 0; g < c_end - c; g += lane_group) flagged[g / lane_group] &= ~slid_bits[g / lane_group];
         count_evals(per_call_, slid);  // the forces at the step start, once per slide
         return slid;
     }

@@ -11,7 +11,6 @@
 #include "lane_math.hpp"
 #include "particle_state.hpp"
 
-#include <algorithm>
 #include <bit>
 #include <cfloat>
 #include <cmath>
@@ -207,17 +206,7 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
         LaneMask lanes[fast_chunk];
 #pragma GCC ivdep
         for (std::size_t i = begin; i < end; ++i) lanes[i - begin] = !fly(i, held_lanes[i - begin] == 0);
-        // Most groups have no flag: an OR of their lanes (a reduction that vectorises) says so.
-        for (std::size_t g = 0; g < end - begin; g += lane_group) {
-            const std::size_t len = std::min(lane_group, end - begin - g);
-            LaneMask any = 0;
-            for (std::size_t j = 0; j < len; ++j) any |= lanes[g + j];
-            LaneBits flags = 0;
-            if (any != 0)
-                for (std::size_t j = 0; j < len; ++j) flags |= LaneBits(lanes[g + j]) << j;
-            flagged[g / lane_group] = flags;
-            flagged_count += static_cast<std::size_t>(std::popcount(flags));
-        }
+        flagged_count = pack_lanes(lanes, end - begin, flagged);
     }
     return (end - begin) - flagged_count;
 }
