@@ -171,9 +171,8 @@ private:
         const double* const drag_k = s_.drag_k.data();
         const double* const re_scale = s_.drag_re_scale.data();
         const double mass0 = mass[0], radius0 = radius[0], k0 = drag_k[0], re_scale0 = re_scale[0];
-        LaneMask slid_lanes[fast_chunk];
-#pragma GCC ivdep
-        for (std::size_t i = c; i < c_end; ++i) {
+        // Particle i's slide, if it rests on one wall and the slide keeps it there; whether it did.
+        const auto slide = [&](std::size_t i) [[gnu::always_inline]] {
             const LaneMask code = held[i - c];
             // One resting wall (one bit of the low byte) and not frozen (nothing above it).
             const bool one_wall = (code != 0) & ((code & (code - 1)) == 0) & (code < 0x100);
@@ -196,11 +195,18 @@ private:
                 drag_loss[i] = take ? drag_loss[i] + m * q.drag_loss : drag_loss[i];
                 if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + m * q.wind_gain : wind_work[i];
             }
-            slid_lanes[i - c] = take;
+            return take;
+        };
+        // The slid particles' flags cleared group by group (bit_of: see flight_chunk).
+        std::size_t slid = 0;
+        for (std::size_t g = c; g < c_end; g += lane_group) {
+            const std::size_t len = std::min(lane_group, c_end - g);
+            LaneBits slid_bits = 0;
+#pragma GCC ivdep
+            for (std::size_t j = 0; j < len; ++j) slid_bits |= bit_of[j] & (LaneBits{0} - LaneBits{slide(g + j)});
+            flagged[(g - c) / lane_group] &= ~slid_bits;
+            slid += static_cast<std::size_t>(std::popcount(slid_bits));
         }
-        LaneBits slid_bits[chunk_groups];
-        const std::size_t slid = pack_lanes(slid_lanes, c_end - c, slid_bits);
-        for (std::size_t g = 0; g < c_end - c; g += lane_group) flagged[g / lane_group] &= ~slid_bits[g / lane_group];
         count_evals(per_call_, slid);  // the forces at the step start, once per slide
         return slid;
     }
@@ -252,16 +258,14 @@ private:
         return moving == 0;
     }
 
-    // Phase 1 of a chunk: from memory it reads the held particles as bits, in cache as lanes.
-    std::size_t flight(std::size_t c, std::size_t c_end, HeldLanes& held, LaneBits* flags) {
+    // Phase 1 of a chunk; its loop takes whole vectors when the state streams from memory.
+    std::size_t flight(std::size_t c, std::size_t c_end, const HeldLanes& held, LaneBits* flags) {
         const LaneBits* const bits = held.bits();
-        if (streaming_) {
-            return identical_ ? flight_chunk<M, Drag, HasWind, true, true>(s_, c, c_end, f_, room_, t0_, h_, bits, nullptr, flags)
-                              : flight_chunk<M, Drag, HasWind, false, true>(s_, c, c_end, f_, room_, t0_, h_, bits, nullptr, flags);
-        }
-        const LaneMask* const lanes = held.lanes();
-        return identical_ ? flight_chunk<M, Drag, HasWind, true, false>(s_, c, c_end, f_, room_, t0_, h_, bits, lanes, flags)
-                          : flight_chunk<M, Drag, HasWind, false, false>(s_, c, c_end, f_, room_, t0_, h_, bits, lanes, flags);
+        if (streaming_)
+            return identical_ ? flight_chunk<M, Drag, HasWind, true, true>(s_, c, c_end, f_, room_, t0_, h_, bits, flags)
+                              : flight_chunk<M, Drag, HasWind, false, true>(s_, c, c_end, f_, room_, t0_, h_, bits, flags);
+        return identical_ ? flight_chunk<M, Drag, HasWind, true, false>(s_, c, c_end, f_, room_, t0_, h_, bits, flags)
+                          : flight_chunk<M, Drag, HasWind, false, false>(s_, c, c_end, f_, room_, t0_, h_, bits, flags);
     }
 
     // Phase 2 for the pending particles, in order: for methods whose position is a polynomial in

@@ -90,9 +90,8 @@ void set_forces(KnownWindForces<Drag>& f, double gx, double gy, double gz, const
 // Phase 1 for particles [begin, end), at most fast_chunk of them: see fast_kernel.hpp. Sets bit
 // j of flagged[k] for particle begin + 64 k + j where it leaves the particle for phase 2 (and
 // clears the others); returns the number of particles it finished. The held particles (resting
-// or frozen, left alone) come as the same bits (read when WholeVectors) and as lanes (read
-// otherwise; see HeldLanes). Identical: every particle has the mass, radius and drag constants
-// of particle 0, so they are read once instead of streamed per particle.
+// or frozen, left alone) come as the same bits in held_bits. Identical: every particle has the
+// mass, radius and drag constants of particle 0, so they are read once instead of streamed.
 // WholeVectors: the state is written back in whole vectors (old values where a particle is
 // left for phase 2) instead of masked stores. Measured on the development machine (AVX-512,
 // bench/RESULTS.md): masked stores are faster while the state is in cache, whole vectors when it
@@ -102,7 +101,7 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
 [[gnu::flatten, gnu::noinline]] std::size_t flight_chunk(ParticleState& s, std::size_t begin, std::size_t end,
                                                          const Forces<Drag, HasWind>& forces, const RoomBounds& room,
                                                          double t0, double h, const LaneBits* held_bits,
-                                                         const LaneMask* held_lanes, LaneBits* flagged) {
+                                                         LaneBits* flagged) {
     // Local copies the stores below provably cannot alias.
     const double gx = forces.gravity.x, gy = forces.gravity.y, gz = forces.gravity.z;
     const double lo_x = room.lo.x, lo_y = room.lo.y, lo_z = room.lo.z;
@@ -182,31 +181,28 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
         }
         return take;
     };
+    // The flags of a group of 64 are ORed into its word in the loop. How the loop reads a
+    // particle's bit sets how many particles GCC takes per iteration: a shift (whose count is a
+    // 32-bit int) makes it 16, a load from bit_of 8. From memory 16 are faster (engine/limit +6-7%
+    // at 1e6 particles, one step per call, over 64-bit lanes in and out), in cache 8 (16 were
+    // 12-23% slower; 8 equal to 64-bit lanes). Paired runs, bench/RESULTS.md.
     std::size_t flagged_count = 0;
-    if constexpr (WholeVectors) {
-        // From memory: the flags of a group of 64 ORed into a word in the loop, the held marks
-        // read from a word. GCC then takes 16 particles per iteration and sets each group up
-        // anew, which costs 12-23% in cache; at 1e6 particles, one step per call, engine/limit
-        // rose 6-7% (paired runs, bench/RESULTS.md) over 64-bit lanes in and out.
-        for (std::size_t g = begin; g < end; g += lane_group) {
-            const std::size_t g_end = end - g < lane_group ? end : g + lane_group;
-            const LaneBits held = held_bits[(g - begin) / lane_group];
-            LaneBits flags = 0;
+    for (std::size_t g = begin; g < end; g += lane_group) {
+        const std::size_t len = end - g < lane_group ? end - g : lane_group;
+        const LaneBits held = held_bits[(g - begin) / lane_group];
+        LaneBits flags = 0;
 #pragma GCC ivdep
-            for (std::size_t i = g; i < g_end; ++i) {
-                // Bit i - g of `held`, moved to the sign bit (GCC vectorises this, not a shift right).
-                const bool free_lane = static_cast<std::int64_t>(held << (lane_group - 1 - (i - g))) >= 0;
-                flags |= LaneBits{!fly(i, free_lane)} << (i - g);
+        for (std::size_t j = 0; j < len; ++j) {
+            if constexpr (WholeVectors) {
+                // Bit j of `held` moved to the sign bit (GCC vectorises this, not a shift right).
+                const bool free_lane = static_cast<std::int64_t>(held << (lane_group - 1 - j)) >= 0;
+                flags |= LaneBits{!fly(g + j, free_lane)} << j;
+            } else {
+                flags |= bit_of[j] & (LaneBits{0} - LaneBits{!fly(g + j, (held & bit_of[j]) == 0)});
             }
-            flagged[(g - begin) / lane_group] = flags;
-            flagged_count += static_cast<std::size_t>(std::popcount(flags));
         }
-    } else {
-        // In cache: 64-bit lanes in and out of the loop, the flags turned into words after it.
-        LaneMask lanes[fast_chunk];
-#pragma GCC ivdep
-        for (std::size_t i = begin; i < end; ++i) lanes[i - begin] = !fly(i, held_lanes[i - begin] == 0);
-        flagged_count = pack_lanes(lanes, end - begin, flagged);
+        flagged[(g - begin) / lane_group] = flags;
+        flagged_count += static_cast<std::size_t>(std::popcount(flags));
     }
     return (end - begin) - flagged_count;
 }
