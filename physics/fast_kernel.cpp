@@ -203,7 +203,7 @@ private:
             const std::size_t len = std::min(lane_group, c_end - g);
             LaneBits slid_bits = 0;
 #pragma GCC ivdep
-            for (std::size_t j = 0; j < len; ++j) slid_bits |= bit_of[j] & (LaneBits{0} - LaneBits{slide(g + j)});
+            for (std::size_t j = 0; j < len; ++j) slid_bits |= bit_if(slide(g + j), j);
             flagged[(g - c) / lane_group] &= ~slid_bits;
             slid += static_cast<std::size_t>(std::popcount(slid_bits));
         }

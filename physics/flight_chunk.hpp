@@ -198,7 +198,7 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
                 const bool free_lane = static_cast<std::int64_t>(held << (lane_group - 1 - j)) >= 0;
                 flags |= LaneBits{!fly(g + j, free_lane)} << j;
             } else {
-                flags |= bit_of[j] & (LaneBits{0} - LaneBits{!fly(g + j, (held & bit_of[j]) == 0)});
+                flags |= bit_if(!fly(g + j, (held & bit_of[j]) == 0), j);
             }
         }
         flagged[(g - begin) / lane_group] = flags;

@@ -35,6 +35,10 @@ alignas(64) inline constexpr auto bit_of = [] {
     return bits;
 }();
 
+// bit_of[j] where `set`, else 0, as a mask (a conditional here is left as a branch, which stops
+// the vectoriser).
+inline LaneBits bit_if(bool set, std::size_t j) { return bit_of[j] & (LaneBits{0} - LaneBits{set}); }
+
 // The particles of a chunk that phase 1 must leave alone (resting or frozen). bits() has one
 // bit per particle; lanes() widens them, for the passes over a chunk with many held particles,
 // to 64-bit lanes holding resting | frozen << 8 (zero for a free particle). In flight most
