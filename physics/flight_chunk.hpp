@@ -185,7 +185,7 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
     // particle's bit sets how many particles GCC takes per iteration: a shift (whose count is a
     // 32-bit int) makes it 16, a load from bit_of 8. From memory 16 are faster (engine/limit +6-7%
     // at 1e6 particles, one step per call, over 64-bit lanes in and out), in cache 8 (16 were
-    // 12-23% slower; 8 equal to 64-bit lanes). Paired runs, bench/RESULTS.md.
+    // 12-23% slower; 8 equal to 64-bit lanes). Alternating runs of two builds, bench/RESULTS.md.
     std::size_t flagged_count = 0;
     for (std::size_t g = begin; g < end; g += lane_group) {
         const std::size_t len = end - g < lane_group ? end - g : lane_group;
