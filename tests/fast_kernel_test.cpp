@@ -115,8 +115,9 @@ TEST(FastKernel, BitIdenticalForIdenticalParticles) {
 }
 
 // Beyond cache_resident_particles phase 1 writes whole vectors instead of masked stores and
-// reads the held particles as bits, in the first step of a call (the others find the block in
-// cache): one step per call after some have come to rest exercises it with held particles.
+// reads the held bits by a shift instead of a table, in the first step of a call (the others
+// find the block in cache): one step per call after some have come to rest exercises it with
+// held particles.
 TEST(FastKernel, BitIdenticalWhenTheStateStreamsFromMemory) {
     const std::size_t n = cache_resident_particles + 1000;
     for (const bool identical : {false, true}) {
