@@ -3,7 +3,7 @@
 // time adaptive Dormand-Prince needs to end within 1e-6 m and 1e-9 m of a tight reference,
 // beside semi-implicit Euler at the default dt and at the dt that reaches 1e-6 m.
 // The tolerance (rtol = atol) and the dt are chosen by a short search before timing.
-#include "physics/simulation.hpp"
+#include "physics/stepping/simulation.hpp"
 #include "registry.hpp"
 
 #include <benchmark/benchmark.h>

@@ -2,8 +2,8 @@
 // the event cap and the monitor: NaN guard, drag validity and stability checks), the stepping
 // kernel alone (fast_kernel.hpp), and the step with the generic reference kernel, to show
 // where the time goes. Every timed step is followed by drain_events(), as the callers do.
-#include "physics/fast_kernel.hpp"
-#include "physics/simulation.hpp"
+#include "physics/stepping/fast_kernel.hpp"
+#include "physics/stepping/simulation.hpp"
 #include "registry.hpp"
 #include "workloads.hpp"
 

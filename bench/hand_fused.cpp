@@ -8,8 +8,8 @@
 // reads and writes a seventh array.
 #include "hand_fused.hpp"
 
-#include "physics/fast_kernel.hpp"
-#include "physics/thread_pool.hpp"
+#include "physics/stepping/fast_kernel.hpp"
+#include "physics/stepping/thread_pool.hpp"
 #include "registry.hpp"
 #include "workloads.hpp"
 

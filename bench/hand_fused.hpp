@@ -4,7 +4,7 @@
 
 #include "workloads.hpp"
 
-#include "physics/particle_state.hpp"
+#include "physics/stepping/particle_state.hpp"
 
 namespace pl::bench {
 

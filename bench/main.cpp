@@ -2,7 +2,7 @@
 // --benchmark_filter=engine/drag_walls) and then prints the ratio tables the README quotes:
 // engine against the hand-fused limit and the object-oriented baseline, thread scaling,
 // each integrator's cost relative to semi-implicit Euler, and the price of accuracy.
-#include "physics/thread_pool.hpp"
+#include "physics/stepping/thread_pool.hpp"
 #include "registry.hpp"
 #include "workloads.hpp"
 

@@ -7,7 +7,7 @@
 #include "registry.hpp"
 #include "workloads.hpp"
 
-#include "physics/simulation.hpp"
+#include "physics/stepping/simulation.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -1,8 +1,8 @@
 #include "workloads.hpp"
 
-#include "physics/drag.hpp"
-#include "physics/emitter.hpp"
-#include "physics/thread_pool.hpp"
+#include "physics/model/drag.hpp"
+#include "physics/model/emitter.hpp"
+#include "physics/stepping/thread_pool.hpp"
 
 namespace pl::bench {
 

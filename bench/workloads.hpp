@@ -3,7 +3,7 @@
 // dt, drag, restitution and room, so their particle-steps per second compare directly.
 #pragma once
 
-#include "physics/scene.hpp"
+#include "physics/model/scene.hpp"
 
 #include <cstddef>
 #include <string>

@@ -1,7 +1,7 @@
 // libFuzzer target for the preset loader. Any input must either fail with well-formed errors or
 // load; whatever loads must save and load back to exactly the same text.
 // Build and run with `./lab fuzz [SECONDS]` (fuzz/run.sh).
-#include "physics/preset_io.hpp"
+#include "io/preset_io.hpp"
 
 #include <cstddef>
 #include <cstdint>

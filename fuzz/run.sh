@@ -29,13 +29,17 @@ fi
 out=build/fuzz
 binary=$out/preset_fuzzer
 # The loader and what it links against; nothing else of physics/ is needed.
-sources=(fuzz/preset_fuzzer.cpp physics/preset_io.cpp physics/preset_reader.cpp physics/scene.cpp physics/emitter.cpp)
+sources=(fuzz/preset_fuzzer.cpp io/preset_io.cpp io/preset_reader.cpp physics/model/scene.cpp physics/model/emitter.cpp)
 mkdir -p "$out"
-if [ ! -x "$binary" ] || [ -n "$(find "${sources[@]}" physics/*.hpp -newer "$binary" 2>/dev/null | head -1)" ]; then
+# The same include roots as the CMake targets: only physics/ and io/ are visible.
+mkdir -p "$out/include"
+ln -sfn "$PWD/physics" "$out/include/physics"
+ln -sfn "$PWD/io" "$out/include/io"
+if [ ! -x "$binary" ] || [ -n "$(find "${sources[@]}" physics io -name '*.hpp' -newer "$binary" 2>/dev/null | head -1)" ]; then
   echo "fuzz: building $binary" >&2
   clang++ -std=c++20 -O1 -g -fno-omit-frame-pointer \
     -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-    -Wall -Wextra -Wpedantic -I. "${sources[@]}" -lfmt -o "$binary"
+    -Wall -Wextra -Wpedantic -I"$out/include" "${sources[@]}" -lfmt -o "$binary"
 fi
 
 # libFuzzer adds what it finds to its first corpus directory: use a temporary one, so the

@@ -1,6 +1,6 @@
 // The work-precision study: observed orders on a smooth drag trajectory, the closed-form
 // reference, bounce-time errors, and option errors.
-#include "physics/accuracy_study.hpp"
+#include "physics/studies/accuracy_study.hpp"
 
 #include <gtest/gtest.h>
 

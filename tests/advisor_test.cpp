@@ -1,6 +1,6 @@
 // The advisor's verdicts come from running the models: two contrasting scenes get opposite
 // advice, and wind without drag is called out.
-#include "physics/advisor.hpp"
+#include "physics/studies/advisor.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Bad input never hurts: every preset in tests/bad_presets/ fails to load with the message its
 // .expect sidecar names; bad files, directories and unwritable places fail clearly and lose nothing.
-#include "physics/preset_io.hpp"
+#include "io/preset_io.hpp"
 
 #include "temp_dir.hpp"
 

@@ -1,9 +1,9 @@
 // Wall contact: bounce times and time to rest against the closed form for a dropped ball,
 // restitution 0 and 1, friction, corners, fast particles.
-#include "physics/contact.hpp"
-#include "physics/energy.hpp"
-#include "physics/particle_stepper.hpp"
-#include "physics/simulation.hpp"
+#include "physics/stepping/contact.hpp"
+#include "physics/stepping/energy.hpp"
+#include "physics/stepping/particle_stepper.hpp"
+#include "physics/stepping/simulation.hpp"
 #include "test_scenes.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Drag and wind against closed forms: terminal velocities, the linear-drag trajectory, the
 // vertical quadratic-drag tanh/tan solutions, the Cd(Re) correlation, and wind as a moving frame.
-#include "physics/drag.hpp"
-#include "physics/simulation.hpp"
+#include "physics/model/drag.hpp"
+#include "physics/stepping/simulation.hpp"
 
 #include <gtest/gtest.h>
 

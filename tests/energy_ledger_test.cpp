@@ -1,7 +1,7 @@
 // The energy ledger balances: E0 + wind work = KE + PE + dissipated + residual, with a small
 // residual that does not drift when bounces are located exactly.
-#include "physics/energy.hpp"
-#include "physics/simulation.hpp"
+#include "physics/stepping/energy.hpp"
+#include "physics/stepping/simulation.hpp"
 #include "test_scenes.hpp"
 
 #include <gtest/gtest.h>

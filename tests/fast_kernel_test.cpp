@@ -1,9 +1,9 @@
 // The fast kernel (vectorised flight + generic contact) against the generic reference kernel:
 // random seeded scenes with many particles bouncing, resting, sliding, under drag and wind,
 // must give bit-identical state, ledger, events, warnings and force counts after many steps.
-#include "physics/fast_kernel.hpp"
-#include "physics/random.hpp"
-#include "physics/simulation.hpp"
+#include "physics/stepping/fast_kernel.hpp"
+#include "physics/model/random.hpp"
+#include "physics/stepping/simulation.hpp"
 #include "same_state.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Observed convergence orders on a smooth trajectory (quadratic drag, no walls): the log-log
 // slope of the end-point error against dt. Reference: Dormand-Prince at tight tolerance.
-#include "physics/simulation.hpp"
+#include "physics/stepping/simulation.hpp"
 
 #include <gtest/gtest.h>
 

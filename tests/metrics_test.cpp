@@ -1,6 +1,6 @@
 // Comparison metrics against closed forms, the physical ordering of drag models, and the
 // lockstep/duration rules the CLI relies on.
-#include "physics/metrics.hpp"
+#include "physics/studies/metrics.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Preset (de)serialisation: the shipped presets load, saved files load back identical, every
 // field is written, and errors carry their JSON path.
-#include "physics/preset_io.hpp"
+#include "io/preset_io.hpp"
 
 #include "temp_dir.hpp"
 

@@ -1,5 +1,5 @@
 // Flight without walls against the closed form x(t) = x0 + v0 t + g t^2 / 2.
-#include "physics/simulation.hpp"
+#include "physics/stepping/simulation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Invariants over many random scenes (seeded, deterministic): never outside the room, never
 // NaN, no energy from nowhere, and every lossy particle reaches a true standstill.
-#include "physics/contact.hpp"
-#include "physics/energy.hpp"
-#include "physics/random.hpp"
-#include "physics/simulation.hpp"
+#include "physics/stepping/contact.hpp"
+#include "physics/stepping/energy.hpp"
+#include "physics/model/random.hpp"
+#include "physics/stepping/simulation.hpp"
 
 #include <gtest/gtest.h>
 

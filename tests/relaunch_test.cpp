@@ -1,7 +1,7 @@
 // Launching a particle again mid-run (the GUI's L key): new state, released from the wall it
 // rested on, and an energy ledger whose residual still measures only the integrator's error.
-#include "physics/energy.hpp"
-#include "physics/relaunch.hpp"
+#include "physics/stepping/energy.hpp"
+#include "physics/stepping/relaunch.hpp"
 #include "test_scenes.hpp"
 
 #include <gtest/gtest.h>

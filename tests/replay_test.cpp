@@ -1,6 +1,6 @@
 // Replay: a scene's trajectory depends only on the scene and the number of steps, never on
 // the frame rate; all variants share the same simulated time.
-#include "physics/experiment.hpp"
+#include "physics/stepping/experiment.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Bit-for-bit comparison of two simulations' results, for the kernel and threading tests.
 #pragma once
 
-#include "physics/simulation.hpp"
+#include "physics/stepping/simulation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Stability study: the classification agrees with the known limits and catches the failures
 // it names.
-#include "physics/stability_study.hpp"
+#include "physics/studies/stability_study.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // block of particles (fast_kernel.hpp, block_particles). Whatever the grouping, the result must
 // be bit for bit that of one step at a time: state, ledger, events in the same order with the
 // same times, warnings (frozen particles and the monitor's), counters.
-#include "physics/fast_kernel.hpp"
-#include "physics/simulation.hpp"
+#include "physics/stepping/fast_kernel.hpp"
+#include "physics/stepping/simulation.hpp"
 #include "same_state.hpp"
 #include "test_scenes.hpp"
 

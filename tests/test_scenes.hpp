@@ -1,8 +1,8 @@
 // Small scene builders shared by the physics tests.
 #pragma once
 
-#include "physics/emitter.hpp"
-#include "physics/simulation.hpp"
+#include "physics/model/emitter.hpp"
+#include "physics/stepping/simulation.hpp"
 
 #include <cstdint>
 #include <vector>

@@ -1,9 +1,9 @@
 // Threads split the particles into contiguous ranges; each range's events are appended in range
 // order. So state, ledger, events, warnings and counters must be bit-identical for any thread count.
-#include "physics/emitter.hpp"
-#include "physics/fast_kernel.hpp"
-#include "physics/simulation.hpp"
-#include "physics/thread_pool.hpp"
+#include "physics/model/emitter.hpp"
+#include "physics/stepping/fast_kernel.hpp"
+#include "physics/stepping/simulation.hpp"
+#include "physics/stepping/thread_pool.hpp"
 #include "same_state.hpp"
 #include "test_scenes.hpp"
 

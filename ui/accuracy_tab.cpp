@@ -1,7 +1,7 @@
-// Accuracy tab: the work-precision study (physics/accuracy_study.hpp) of the selected particle
+// Accuracy tab: the work-precision study (physics/studies/accuracy_study.hpp) of the selected particle
 // and variant, run in the background; error against cost on log-log axes, one line per method,
 // the current setting marked.
-#include "physics/accuracy_study.hpp"
+#include "physics/studies/accuracy_study.hpp"
 #include "ui/palette.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/plot.hpp"

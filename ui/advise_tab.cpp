@@ -1,5 +1,5 @@
-// Advise tab: which force terms this scene needs (physics/advisor.hpp), run in the background.
-#include "physics/advisor.hpp"
+// Advise tab: which force terms this scene needs (physics/studies/advisor.hpp), run in the background.
+#include "physics/studies/advisor.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/sections.hpp"
 

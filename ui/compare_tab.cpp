@@ -1,6 +1,6 @@
-// Compare tab: the metrics of every variant, live (physics/metrics.hpp trackers fed by the
+// Compare tab: the metrics of every variant, live (physics/studies/metrics.hpp trackers fed by the
 // recorder) and from a timed background run (run_comparison, which also measures the cost).
-#include "physics/metrics.hpp"
+#include "physics/studies/metrics.hpp"
 #include "ui/frame_recorder.hpp"
 #include "ui/palette.hpp"
 #include "ui/panel_state.hpp"

@@ -1,5 +1,5 @@
 // Events tab: bounces, rests, stops, lifts and freezes as they happened.
-#include "physics/particle_state.hpp"
+#include "physics/stepping/particle_state.hpp"
 #include "ui/frame_recorder.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/sections.hpp"

@@ -4,7 +4,7 @@
 // changed half-way.
 #pragma once
 
-#include "physics/scene.hpp"
+#include "physics/model/scene.hpp"
 
 #include <imgui.h>
 

@@ -1,7 +1,7 @@
 #include "ui/frame_recorder.hpp"
 
-#include "physics/energy.hpp"
-#include "physics/relaunch.hpp"
+#include "physics/stepping/energy.hpp"
+#include "physics/stepping/relaunch.hpp"
 #include "ui/lab_ui.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Fills the session's PlotHistory from the running experiment: plot samples, the event log and
-// the live comparison metrics (physics/metrics.hpp). No ImGui.
+// the live comparison metrics (physics/studies/metrics.hpp). No ImGui.
 #pragma once
 
 #include "ui/lab_session.hpp"

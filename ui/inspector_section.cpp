@@ -1,4 +1,4 @@
-#include "physics/energy.hpp"
+#include "physics/stepping/energy.hpp"
 #include "ui/palette.hpp"
 #include "ui/sections.hpp"
 

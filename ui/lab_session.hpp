@@ -3,9 +3,9 @@
 // except through the session's requests, which the app shell executes between frames.
 #pragma once
 
-#include "physics/experiment.hpp"
-#include "physics/preset_io.hpp"
-#include "physics/scene.hpp"
+#include "physics/stepping/experiment.hpp"
+#include "io/preset_io.hpp"
+#include "physics/model/scene.hpp"
 
 #include <array>
 #include <filesystem>

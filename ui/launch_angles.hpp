@@ -3,7 +3,7 @@
 // gesture in the 3D view.
 #pragma once
 
-#include "physics/scene.hpp"
+#include "physics/model/scene.hpp"
 
 namespace pl::ui {
 

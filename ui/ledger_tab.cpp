@@ -1,5 +1,5 @@
 // Energy ledger tab: where each variant's energy went, in joules, all particles together.
-#include "physics/energy.hpp"
+#include "physics/stepping/energy.hpp"
 #include "ui/sections.hpp"
 
 #include <imgui.h>

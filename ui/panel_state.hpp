@@ -2,10 +2,10 @@
 // progress, and the background studies.
 #pragma once
 
-#include "physics/accuracy_study.hpp"
-#include "physics/advisor.hpp"
-#include "physics/metrics.hpp"
-#include "physics/stability_study.hpp"
+#include "physics/studies/accuracy_study.hpp"
+#include "physics/studies/advisor.hpp"
+#include "physics/studies/metrics.hpp"
+#include "physics/studies/stability_study.hpp"
 #include "ui/background_job.hpp"
 #include "ui/field_edit.hpp"
 #include "ui/lab_session.hpp"

@@ -4,8 +4,8 @@
 // it alone.
 #pragma once
 
-#include "physics/events.hpp"
-#include "physics/metrics.hpp"
+#include "physics/stepping/events.hpp"
+#include "physics/studies/metrics.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "physics/preset_io.hpp"
+#include "io/preset_io.hpp"
 #include "ui/lab_ui.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/sections.hpp"

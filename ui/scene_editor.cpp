@@ -1,6 +1,6 @@
 #include "ui/scene_editor.hpp"
 
-#include "physics/drag.hpp"
+#include "physics/model/drag.hpp"
 #include "ui/scene_validation.hpp"
 
 #include <imgui.h>

@@ -1,5 +1,5 @@
-#include "physics/emitter.hpp"
-#include "physics/preset_io.hpp"
+#include "physics/model/emitter.hpp"
+#include "io/preset_io.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/scene_editor.hpp"
 #include "ui/sections.hpp"

@@ -1,6 +1,6 @@
 #include "ui/scene_validation.hpp"
 
-#include "physics/preset_io.hpp"
+#include "io/preset_io.hpp"
 
 namespace pl::ui {
 

@@ -3,7 +3,7 @@
 // for, with the same messages (JSON path and rule).
 #pragma once
 
-#include "physics/scene.hpp"
+#include "physics/model/scene.hpp"
 
 #include <string>
 

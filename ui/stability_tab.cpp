@@ -1,7 +1,7 @@
-// Stability tab: the dt x drag-stiffness map of the current method (physics/stability_study.hpp),
+// Stability tab: the dt x drag-stiffness map of the current method (physics/studies/stability_study.hpp),
 // computed in the background, coloured by outcome, with the theoretical limit and the current
 // setting marked.
-#include "physics/stability_study.hpp"
+#include "physics/studies/stability_study.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/plot.hpp"
 #include "ui/sections.hpp"

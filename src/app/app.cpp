@@ -2,7 +2,7 @@
 
 #include "app/frame_loop.hpp"
 #include "app/gui_options.hpp"
-#include "physics/preset_io.hpp"
+#include "io/preset_io.hpp"
 #include "ui/lab_session.hpp"
 
 #include <cstdio>

@@ -1,7 +1,7 @@
 // Orbit camera around a target point: yaw about +y, pitch above the horizon, distance.
 #pragma once
 
-#include "physics/scene.hpp"
+#include "physics/model/scene.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

@@ -1,6 +1,6 @@
 #include "app/particle_tooltip.hpp"
 
-#include "physics/energy.hpp"
+#include "physics/stepping/energy.hpp"
 #include "ui/palette.hpp"
 
 #include <glm/geometric.hpp>

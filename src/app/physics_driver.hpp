@@ -3,7 +3,7 @@
 // reported behind; the trajectory itself never depends on the frame rate).
 #pragma once
 
-#include "physics/experiment.hpp"
+#include "physics/stepping/experiment.hpp"
 
 #include <cstdint>
 #include <functional>

@@ -4,7 +4,7 @@
 
 #include "app/camera.hpp"
 #include "app/layout.hpp"
-#include "physics/experiment.hpp"
+#include "physics/stepping/experiment.hpp"
 
 #include <optional>
 

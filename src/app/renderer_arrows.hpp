@@ -2,7 +2,7 @@
 #pragma once
 
 #include "app/renderer_lines.hpp"
-#include "physics/experiment.hpp"
+#include "physics/stepping/experiment.hpp"
 
 #include <optional>
 

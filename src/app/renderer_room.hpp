@@ -5,7 +5,7 @@
 #include "app/camera.hpp"
 #include "app/renderer_lines.hpp"
 #include "app/renderer_shader.hpp"
-#include "physics/scene.hpp"
+#include "physics/model/scene.hpp"
 
 namespace pl::app {
 

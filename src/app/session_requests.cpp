@@ -1,6 +1,6 @@
 #include "app/session_requests.hpp"
 
-#include "physics/relaunch.hpp"
+#include "physics/stepping/relaunch.hpp"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 #include "app/state_dump.hpp"
 
 #include "app/picking.hpp"
-#include "cli/metrics_json.hpp"
+#include "io/metrics_json.hpp"
 #include "ui/plot_history.hpp"
 
 #include <imgui.h>

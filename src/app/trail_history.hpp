@@ -2,7 +2,7 @@
 // one), sampled in simulated time so a trail's shape does not depend on the frame rate.
 #pragma once
 
-#include "physics/experiment.hpp"
+#include "physics/stepping/experiment.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -1,8 +1,8 @@
 // particle-lab accuracy: work-precision table (error vs cost per method and step size).
 #include "cli/cli_support.hpp"
 
-#include "physics/accuracy_study.hpp"
-#include "physics/csv_writer.hpp"
+#include "physics/studies/accuracy_study.hpp"
+#include "io/csv_writer.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // particle-lab advise: which force terms this scene needs, from running the models.
 #include "cli/cli_support.hpp"
 
-#include "physics/advisor.hpp"
+#include "physics/studies/advisor.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

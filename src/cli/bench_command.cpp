@@ -2,8 +2,8 @@
 // hash of the final positions so speed and determinism are checked together.
 #include "cli/cli_support.hpp"
 
-#include "physics/simulation.hpp"
-#include "physics/thread_pool.hpp"
+#include "physics/stepping/simulation.hpp"
+#include "physics/stepping/thread_pool.hpp"
 
 #include <fmt/format.h>
 

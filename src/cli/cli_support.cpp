@@ -1,6 +1,6 @@
 #include "cli/cli_support.hpp"
 
-#include "physics/preset_io.hpp"
+#include "io/preset_io.hpp"
 
 #include <fmt/format.h>
 

@@ -2,7 +2,7 @@
 // terminal, plain-text tables and number formatting.
 #pragma once
 
-#include "physics/scene.hpp"
+#include "physics/model/scene.hpp"
 
 #include <CLI/CLI.hpp>
 

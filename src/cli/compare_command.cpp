@@ -1,8 +1,8 @@
 // particle-lab compare: one metrics row per variant, and the difference to a baseline variant.
 #include "cli/cli_support.hpp"
 
-#include "cli/metrics_json.hpp"
-#include "physics/metrics.hpp"
+#include "io/metrics_json.hpp"
+#include "physics/studies/metrics.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -1,11 +1,11 @@
 // particle-lab run: every variant in lockstep; trajectory and events CSV, or a summary.
 #include "cli/cli_support.hpp"
 
-#include "physics/csv_writer.hpp"
-#include "physics/energy.hpp"
-#include "physics/metrics.hpp"
-#include "physics/simulation.hpp"
-#include "physics/thread_pool.hpp"
+#include "io/csv_writer.hpp"
+#include "physics/stepping/energy.hpp"
+#include "physics/studies/metrics.hpp"
+#include "physics/stepping/simulation.hpp"
+#include "physics/stepping/thread_pool.hpp"
 
 #include <fmt/format.h>
 

@@ -1,8 +1,8 @@
 // particle-lab stability: the extremes grid, classified cell by cell.
 #include "cli/cli_support.hpp"
 
-#include "physics/csv_writer.hpp"
-#include "physics/stability_study.hpp"
+#include "io/csv_writer.hpp"
+#include "physics/studies/stability_study.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

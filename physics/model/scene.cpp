@@ -1,0 +1,112 @@
+#include "physics/model/scene.hpp"
+
+#include "physics/model/emitter.hpp"
+
+#include <limits>
+
+namespace pl {
+
+std::size_t variant_count(const Scene& scene) {
+    return scene.variants.empty() ? 1 : scene.variants.size();
+}
+
+Model model_for_variant(const Scene& scene, std::size_t variant) {
+    Model m{scene.name, scene.room, scene.world, scene.drag, scene.contact, scene.integrator};
+    if (scene.variants.empty()) return m;
+    const Variant& v = scene.variants.at(variant);
+    m.label = v.label;
+    if (v.drag) m.drag = *v.drag;
+    if (v.wind) m.world.wind = *v.wind;
+    if (v.air) m.world.air = *v.air;
+    if (v.contact) m.contact = *v.contact;
+    if (v.integrator) m.integrator = *v.integrator;
+    return m;
+}
+
+std::vector<ParticleSpec> initial_particles(const Scene& scene) {
+    std::vector<ParticleSpec> out = scene.particles;
+    if (scene.emitter) {
+        std::vector<ParticleSpec> emitted = emit_particles(*scene.emitter, scene.room);
+        out.insert(out.end(), emitted.begin(), emitted.end());
+    }
+    return out;
+}
+
+const char* to_string(Method m) {
+    switch (m) {
+        case Method::explicit_euler: return "explicit_euler";
+        case Method::semi_implicit_euler: return "semi_implicit_euler";
+        case Method::velocity_verlet: return "velocity_verlet";
+        case Method::rk4: return "rk4";
+        case Method::dopri5: return "dopri5";
+        case Method::exponential: return "exponential";
+    }
+    return "?";
+}
+
+const char* to_string(DragModel d) {
+    switch (d) {
+        case DragModel::none: return "none";
+        case DragModel::linear: return "linear";
+        case DragModel::quadratic: return "quadratic";
+        case DragModel::sphere_re: return "sphere_re";
+    }
+    return "?";
+}
+
+const char* to_string(WindKind w) {
+    switch (w) {
+        case WindKind::none: return "none";
+        case WindKind::constant: return "constant";
+        case WindKind::gust: return "gust";
+        case WindKind::shear: return "shear";
+        case WindKind::vortex: return "vortex";
+    }
+    return "?";
+}
+
+std::optional<Method> method_from_string(const std::string& s) {
+    for (Method m : {Method::explicit_euler, Method::semi_implicit_euler, Method::velocity_verlet,
+                     Method::rk4, Method::dopri5, Method::exponential})
+        if (s == to_string(m)) return m;
+    return std::nullopt;
+}
+
+std::optional<DragModel> drag_model_from_string(const std::string& s) {
+    for (DragModel d : {DragModel::none, DragModel::linear, DragModel::quadratic, DragModel::sphere_re})
+        if (s == to_string(d)) return d;
+    return std::nullopt;
+}
+
+std::optional<WindKind> wind_kind_from_string(const std::string& s) {
+    for (WindKind w : {WindKind::none, WindKind::constant, WindKind::gust, WindKind::shear, WindKind::vortex})
+        if (s == to_string(w)) return w;
+    return std::nullopt;
+}
+
+int method_order(Method m) {
+    switch (m) {
+        case Method::explicit_euler: return 1;
+        case Method::semi_implicit_euler: return 1;
+        case Method::velocity_verlet: return 2;
+        case Method::rk4: return 4;
+        case Method::dopri5: return 5;
+        case Method::exponential: return 1;
+    }
+    return 1;
+}
+
+double method_stability_limit(Method m) {
+    // Stability of y' = -k y: |R(-hk)| <= 1 on the negative real axis.
+    switch (m) {
+        case Method::explicit_euler: return 2.0;
+        case Method::semi_implicit_euler: return 2.0;
+        case Method::velocity_verlet: return 2.0;   // Heun-type velocity update: R = 1 - z + z^2/2
+        case Method::rk4: return 2.785293563405282;
+        case Method::dopri5: return 3.306250000000000;  // fixed-step real-axis bound; adaptive stays stable
+        case Method::exponential: return std::numeric_limits<double>::infinity();
+    }
+    return 2.0;
+}
+
+}  // namespace pl

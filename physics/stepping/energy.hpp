@@ -1,0 +1,27 @@
+// Energy bookkeeping: E0 + wind work = KE + PE + dissipated (bounce, friction, drag) + residual.
+// The residual is the integrator's own energy error.
+#pragma once
+
+#include "physics/stepping/particle_state.hpp"
+
+namespace pl {
+
+struct EnergyBreakdown {
+    double kinetic = 0, potential = 0;
+    double dissipated_bounce = 0, dissipated_friction = 0, dissipated_drag = 0;
+    double wind_work = 0;
+    double initial = 0;
+    double residual() const {
+        return initial + wind_work - (kinetic + potential + dissipated_bounce + dissipated_friction + dissipated_drag);
+    }
+    double total_mechanical() const { return kinetic + potential; }
+};
+
+// Gravitational potential relative to the room's lowest point along g (>= 0 inside the room).
+double potential_energy(const Vec3& gravity, const Room& room, double mass, const Vec3& position);
+double kinetic_energy(double mass, const Vec3& velocity);
+
+EnergyBreakdown particle_energy(const ParticleState& s, std::size_t i, const Vec3& gravity, const Room& room);
+EnergyBreakdown total_energy(const ParticleState& s, const Vec3& gravity, const Room& room);
+
+}  // namespace pl

@@ -1,0 +1,431 @@
+// Advances one particle through one fixed step, with exact wall handling:
+//  * in flight the chosen method integrates; if the end of the step is outside a wall, the
+//    time of impact is located on the step's own trajectory: in closed form where the
+//    position is a quadratic in the step length (explicit and semi-implicit Euler, velocity
+//    Verlet), otherwise by a bracketing root search on the method re-run with a shorter step
+//    (for adaptive Dormand-Prince, on its dense output inside the internal step that
+//    crossed, or that passed the wall and came back within it); the particle is advanced to
+//    the wall, the impact response is applied, and the rest of the step continues from there;
+//  * a particle resting on walls (rebound speed fell below rest_speed while the net force
+//    pressed it on the wall) moves in the wall's plane with the normal force cancelling the
+//    pressing acceleration and Coulomb friction mu N opposing sliding; static friction holds it
+//    when the tangential force is below mu N. Its normal velocity is exactly 0 and its
+//    position exactly on the plane, so it cannot jitter or sink.
+#pragma once
+
+#include "physics/stepping/contact.hpp"
+#include "physics/stepping/events.hpp"
+#include "physics/stepping/integrators.hpp"
+#include "physics/stepping/simulation.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace pl {
+
+struct StepContext {
+    const RoomBounds* room;
+    const ContactSettings* contact;
+    Method method;
+    double rtol, atol;
+    std::vector<Event>* events;
+    AdaptiveStats* adaptive;
+    std::uint64_t* contact_solves;
+};
+
+struct ParticleStep {
+    FlightState y;           // position, velocity; ledger deltas per kg for drag and wind
+    double radius = 0.0;
+    double step_hint = 0.0;  // dopri5
+    std::uint8_t resting = 0;
+    double bounce_loss = 0.0, friction_loss = 0.0;  // per kg, during this step
+};
+
+inline bool is_finite(const FlightState& y) {
+    return std::isfinite(y.x.x) && std::isfinite(y.x.y) && std::isfinite(y.x.z) && std::isfinite(y.v.x) &&
+           std::isfinite(y.v.y) && std::isfinite(y.v.z) && std::isfinite(y.drag_loss) && std::isfinite(y.wind_gain);
+}
+
+// Particle i of the state arrays as the stepper's working copy (`hints`: dopri5 only; `radius`:
+// the particle's radius).
+inline ParticleStep load_step(const ParticleState& s, std::size_t i, const std::vector<double>* hints, double radius) {
+    ParticleStep p;
+    p.y.x = s.position(i);
+    p.y.v = s.velocity(i);
+    p.radius = radius;
+    p.resting = s.resting[i];
+    if (hints) p.step_hint = (*hints)[i];
+    return p;
+}
+
+// store_step without the bounce and friction ledgers (the fast kernel adds those later).
+template <DragModel Drag, bool HasWind>
+void store_motion(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass) {
+    s.set_position(i, p.y.x);
+    s.set_velocity(i, p.y.v);
+    s.resting[i] = p.resting;
+    if (hints) (*hints)[i] = p.step_hint;
+    if constexpr (Drag != DragModel::none) {
+        s.dissipated_drag[i] += mass * p.y.drag_loss;
+        if constexpr (HasWind) s.wind_work[i] += mass * p.y.wind_gain;
+    }
+}
+
+// Writes a stepped particle back, adding its ledger increments (per-kg losses times `mass`, the
+// particle's mass).
+template <DragModel Drag, bool HasWind>
+void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass) {
+    store_motion<Drag, HasWind>(s, i, p, hints, mass);
+    s.dissipated_bounce[i] += mass * p.bounce_loss;
+    s.dissipated_friction[i] += mass * p.friction_loss;
+}
+
+// Adds what one kernel pass counted (force evaluations, adaptive steps, contact solves).
+template <class F>
+void add_counts(ForceCounters& c, const F& forces, const AdaptiveStats& adaptive, std::uint64_t contact_solves) {
+    c.gravity += forces.gravity_evals;
+    c.drag += forces.drag_evals;
+    c.wind += forces.wind_evals;
+    c.accepted_steps += adaptive.accepted;
+    c.rejected_steps += adaptive.rejected;
+    c.contacts += contact_solves;
+}
+
+// Earliest s in [0, h] at which the wall distance d0 + b s + c s^2 reaches 0, given it is
+// below 0 at s = h (h when round-off denies that). Roots by the cancellation-free form
+// q = -(b + sgn(b) sqrt(b^2 - 4 c d0)) / 2, s = q / c or d0 / q (Press et al., Numerical Recipes,
+// 3rd ed., section 5.6). A sphere already on the wall (d0 <= 0) touches it now unless it moves
+// away, and then only where it comes back.
+inline double first_contact_root(double d0, double b, double c, double h) {
+    // Every case is computed and the one whose conditions hold is selected, without branches:
+    // the contact kernel runs this for eight particles at a time (a case that does not apply may
+    // compute a NaN or an infinity, which is never selected).
+    const bool on_wall = !(d0 > 0.0);
+    const bool moving_in = (b < 0.0) | ((b == 0.0) & (c <= 0.0));
+    const double back = c < 0.0 ? -b / c : h;     // on the wall moving away: where it returns
+    const double linear = b < 0.0 ? -d0 / b : h;  // c == 0
+    const double disc = b * b - 4.0 * c * d0;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    const double r1 = q / c, r2 = d0 / q;
+    const double first = r1 > 0.0 ? r1 : INFINITY;
+    const double quadratic = disc >= 0.0 ? ((r2 > 0.0) & (r2 < first) ? r2 : first) : h;
+    const double s = on_wall ? back : (c == 0.0 ? linear : quadratic);
+    // NaN (round-off at a double root) and overshoot: h.
+    return on_wall & moving_in ? 0.0 : ((s >= 0.0) & (s <= h) ? s : h);
+}
+
+// Whether the method's position after a step of length s is x0 + s v0 + kappa s^2 a0, with a0
+// the acceleration at the step start: explicit Euler (kappa = 0), semi-implicit Euler (v0 + s a0
+// is the new velocity, so kappa = 1) and velocity Verlet (kappa = 1/2).
+constexpr bool has_polynomial_position(Method m) {
+    return m == Method::explicit_euler || m == Method::semi_implicit_euler || m == Method::velocity_verlet;
+}
+constexpr double position_kappa(Method m) {
+    return m == Method::semi_implicit_euler ? 1.0 : m == Method::velocity_verlet ? 0.5 : 0.0;
+}
+
+// Time of impact on `wall` of a step starting at y whose position is that polynomial.
+inline double polynomial_time_of_impact(const RoomBounds& room, int wall, const FlightState& y, double radius,
+                                        double kappa, const Vec3& a0, double h) {
+    const int axis = RoomBounds::axis(wall);
+    const double sign = RoomBounds::is_max(wall) ? -1.0 : 1.0;
+    return first_contact_root(room.distance(wall, y.x, radius), sign * y.v[axis], sign * kappa * a0[axis], h);
+}
+
+template <class F>
+class ParticleStepper {
+public:
+    ParticleStepper(const StepContext& ctx, const F& f) : c_(ctx), f_(f) {}
+
+    void advance(ParticleStep& p, std::uint32_t id, double t0, double h) const {
+        double t = t0, remaining = h;
+        for (int guard = 0; remaining > 0.0; ++guard) {
+            if (guard > 64) {  // pathological: keep the particle in the room and stop this step
+                p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
+                return;
+            }
+            if (p.resting) {
+                // The forces at the step start decide the release and drive the slide (the
+                // release changes only which walls hold the particle, not x or v).
+                const Derivative d = f_(p.y.x, p.y.v, t);
+                if (release_walls(p, id, t, d)) continue;
+                slide(p, id, t, remaining, d);
+                return;
+            }
+            int wall = -1;
+            double s_hit = remaining;
+            if (adaptive()) {
+                if (!adaptive_flight(p, t, remaining, wall, s_hit)) return;
+            } else {
+                const FlightState end = flight(p, t, remaining);
+                Vec3 a0(0.0);
+                for (int w = 0; w < wall_count; ++w) {
+                    if (c_.room->distance(w, end.x, p.radius) >= 0.0) continue;
+                    if (wall < 0 && polynomial_position()) a0 = f_(p.y.x, p.y.v, t).a;
+                    const double s = time_of_impact(p, w, t, remaining, a0);
+                    if (wall < 0 || s < s_hit) { wall = w; s_hit = s; }
+                }
+                if (wall < 0) {
+                    p.y = end;
+                    return;
+                }
+                if (s_hit > 0.0) p.y = flight(p, t, s_hit);
+            }
+            ++*c_.contact_solves;
+            p.y.x[RoomBounds::axis(wall)] = c_.room->contact_plane(wall, p.radius);
+            p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
+            t += s_hit;
+            remaining -= s_hit;
+            hit_wall(p, id, wall, t);
+        }
+    }
+
+private:
+    FlightState flight(ParticleStep& p, double t, double h) const {
+        switch (c_.method) {
+            case Method::explicit_euler: return explicit_euler_step(p.y, t, h, f_);
+            case Method::semi_implicit_euler: return semi_implicit_euler_step(p.y, t, h, f_);
+            case Method::velocity_verlet: return velocity_verlet_step(p.y, t, h, f_);
+            case Method::rk4: return rk4_step(p.y, t, h, f_);
+            case Method::exponential: return exponential_step(p.y, t, h, f_);
+            case Method::dopri5: return dopri5_step(p.y, t, h, f_, c_.rtol, c_.atol).y1;  // fixed step
+        }
+        return p.y;
+    }
+
+    bool adaptive() const { return c_.method == Method::dopri5 && c_.adaptive != nullptr; }
+
+    // Adaptive Dormand-Prince over [t, t + h], as many internal steps as the tolerance needs.
+    // After each accepted internal step the walls are checked; an impact inside it is located
+    // on the method's dense output, and p.y is set to the state there. Returns whether a wall
+    // was hit (then `wall` and `s_hit`, the time from t, are set); otherwise p.y is the state
+    // at t + h. p.step_hint carries the last good internal step between calls.
+    bool adaptive_flight(ParticleStep& p, double t, double h, int& wall, double& s_hit) const {
+        double done = 0.0;
+        double step = (p.step_hint > 0.0 && p.step_hint < h) ? p.step_hint : h;
+        for (int guard = 0; done < h && guard < 100000; ++guard) {
+            const bool last = step >= h - done;
+            const double s = last ? h - done : step;
+            const DopriStep trial = dopri5_step(p.y, t + done, s, f_, c_.rtol, c_.atol);
+            if (trial.err_norm > 1.0 && s > 1e-12 * h) {
+                ++c_.adaptive->rejected;
+                step = s * dopri5_step_factor(trial.err_norm);
+                continue;
+            }
+            ++c_.adaptive->accepted;
+            const double grown = s * dopri5_step_factor(trial.err_norm);
+            p.step_hint = last ? std::max(step, grown) : grown;
+            wall = -1;
+            double theta_hit = 1.0;
+            auto take_earliest = [&](int w, double theta) {
+                if (wall < 0 || theta < theta_hit) { wall = w; theta_hit = theta; }
+            };
+            for (int w = 0; w < wall_count; ++w) {
+                if (c_.room->distance(w, trial.y1.x, p.radius) >= 0.0) continue;
+                take_earliest(w, find_contact(
+                                     [&](double th) { return c_.room->distance(w, trial.at(th).x, p.radius); }, 1.0));
+            }
+            // A wall passed and left within the step: only along an axis whose velocity changed
+            // sign, towards the wall it was moving to (one product per axis in the common case).
+            for (int axis = 0; axis < 3; ++axis) {
+                const double v0 = p.y.v[axis];
+                if (!(v0 * trial.y1.v[axis] < 0.0)) continue;
+                const int w = 2 * axis + (v0 > 0.0 ? 1 : 0);  // Wall: x_min, x_max, y_min, ...
+                auto distance = [&](double th) { return c_.room->distance(w, trial.at(th).x, p.radius); };
+                const double closest = turning_point(p.y, trial, w, p.radius, s);
+                if (closest > 0.0 && distance(closest) < 0.0) take_earliest(w, find_contact(distance, closest));
+            }
+            if (wall >= 0) {
+                p.y = trial.at(theta_hit);
+                s_hit = std::min(h, done + theta_hit * s);
+                return true;
+            }
+            p.y = trial.y1;
+            done = last ? h : done + s;
+            step = p.step_hint;
+        }
+        return false;
+    }
+
+    // A long internal step can end clear of a wall it passed through on the way: a ball whose
+    // apex lies beyond the ceiling, a glancing pass along a side wall. For a step whose velocity
+    // along the wall's normal turns from towards it to away from it (the caller checks the turn),
+    // the closest approach is found on the dense output by golden-section search (the distance
+    // is unimodal around a single turn) and returned as a fraction of the step; -1 where the wall
+    // is further than the step could have carried the particle towards it (the speed towards it
+    // falls until the turn, so the approach is at most |v_n| s).
+    double turning_point(const FlightState& y0, const DopriStep& trial, int w, double radius, double s) const {
+        const double speed_towards = -glm::dot(y0.v, RoomBounds::inward_normal(w));
+        if (c_.room->distance(w, y0.x, radius) > speed_towards * s) return -1.0;
+        auto distance = [&](double th) { return c_.room->distance(w, trial.at(th).x, radius); };
+        constexpr double golden = 0.6180339887498949;
+        double lo = 0.0, hi = 1.0;
+        double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+        double d_a = distance(a), d_b = distance(b);
+        for (int it = 0; it < 64 && hi - lo > 1e-12; ++it) {
+            if (d_a < d_b) {
+                hi = b;
+                b = a;
+                d_b = d_a;
+                a = hi - golden * (hi - lo);
+                d_a = distance(a);
+            } else {
+                lo = a;
+                a = b;
+                d_a = d_b;
+                b = lo + golden * (hi - lo);
+                d_b = distance(b);
+            }
+        }
+        return d_a < d_b ? a : b;
+    }
+
+    bool polynomial_position() const { return has_polynomial_position(c_.method); }
+
+    // Earliest s in [0, h] at which the sphere touches `wall`, given it is beyond it at s = h,
+    // on the fixed-step method's own trajectory (the step re-run with length s): in closed form
+    // where that trajectory is a polynomial in s (a0 = acceleration at the step start), by a
+    // root search otherwise.
+    double time_of_impact(ParticleStep& p, int wall, double t, double h, const Vec3& a0) const {
+        if (polynomial_position())
+            return polynomial_time_of_impact(*c_.room, wall, p.y, p.radius, position_kappa(c_.method), a0, h);
+        return find_contact([&](double s) { return c_.room->distance(wall, flight(p, t, s).x, p.radius); }, h);
+    }
+
+    // Root of a wall distance d(s) on [0, h], d(h) < 0: bisection while the lower end is on the
+    // wall (the root could be at 0 or later), then Illinois regula falsi (Dahlquist & Bjorck),
+    // which converges superlinearly. Returns the end of the bracket at or just past the wall.
+    template <class Distance>
+    static double find_contact(const Distance& d, double h) {
+        double lo = 0.0, hi = h;
+        double f_lo = d(lo), f_hi = d(hi);
+        int side = 0;
+        for (int it = 0; it < 80 && hi - lo > 1e-15 * h; ++it) {
+            double s;
+            if (f_lo <= 0.0) {
+                s = 0.5 * (lo + hi);
+            } else {
+                s = lo + (hi - lo) * f_lo / (f_lo - f_hi);
+                if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+            }
+            const double f_s = d(s);
+            if (f_s > 0.0) {
+                lo = s;
+                f_lo = f_s;
+                if (side == -1) f_hi *= 0.5;
+                side = -1;
+            } else {
+                hi = s;
+                f_hi = f_s;
+                if (side == 1 && f_lo > 0.0) f_lo *= 0.5;
+                side = 1;
+            }
+            if (f_s == 0.0) break;
+        }
+        return hi;
+    }
+
+    void hit_wall(ParticleStep& p, std::uint32_t id, int wall, double t) const {
+        const Vec3 n = RoomBounds::inward_normal(wall);
+        const double speed_in = glm::length(p.y.v);
+        ImpactResult r = impact(p.y.v, n, *c_.contact);
+        p.bounce_loss += r.bounce_loss_per_kg;
+        p.friction_loss += r.friction_loss_per_kg;
+        p.y.v = r.v_out;
+        EventKind kind = EventKind::bounce;
+        if (r.normal_speed_out < c_.contact->rest_speed) {
+            // Below the rest threshold the remaining micro-bounces (which would sum to a finite
+            // time, t0 (1+e)/(1-e) for a drop) are replaced by resting contact when the net force
+            // presses the particle on the wall. Against a wall nothing presses it on, a lossy
+            // wall (e < 1) still ends the slow normal motion, so it cannot creep forever.
+            const bool pressed = pressed_on(p, n, t);
+            if (pressed || c_.contact->restitution < 1.0) {
+                p.bounce_loss += 0.5 * r.normal_speed_out * r.normal_speed_out;
+                p.y.v -= glm::dot(p.y.v, n) * n;
+            }
+            if (pressed) {
+                p.resting |= static_cast<std::uint8_t>(1u << wall);
+                kind = EventKind::rest;
+            }
+        }
+        if (r.normal_speed_in > 0.0 || kind == EventKind::rest)
+            c_.events->push_back({t, id, static_cast<std::int8_t>(wall), kind, speed_in, glm::length(p.y.v)});
+    }
+
+    bool pressed_on(const ParticleStep& p, const Vec3& n, double t) const {
+        return glm::dot(f_(p.y.x, p.y.v, t).a, n) < 0.0;
+    }
+
+    // Leaves every resting wall that the particle is kicked or pulled away from; returns true
+    // when it is no longer resting on any wall.
+    bool release_walls(ParticleStep& p, std::uint32_t id, double t, const Derivative& d) const {
+        for (int w = 0; w < wall_count; ++w) {
+            if (!(p.resting & (1u << w))) continue;
+            const Vec3 n = RoomBounds::inward_normal(w);
+            if (glm::dot(d.a, n) > 0.0 || glm::dot(p.y.v, n) > 0.0) {
+                p.resting &= static_cast<std::uint8_t>(~(1u << w));
+                const double s = glm::length(p.y.v);
+                c_.events->push_back({t, id, static_cast<std::int8_t>(w), EventKind::lift, s, s});
+            }
+        }
+        return p.resting == 0;
+    }
+
+    // Resting contact for the rest of the step (first order, semi-implicit; see file comment).
+    void slide(ParticleStep& p, std::uint32_t id, double t, double h, const Derivative& d) const {
+        Vec3 a = d.a;
+        double press = 0.0;
+        for (int w = 0; w < wall_count; ++w) {
+            if (!(p.resting & (1u << w))) continue;
+            const Vec3 n = RoomBounds::inward_normal(w);
+            const double an = glm::dot(a, n);
+            press -= an;  // an <= 0 here: release_walls took the others
+            a -= an * n;
+            p.y.v -= glm::dot(p.y.v, n) * n;
+        }
+        const Vec3 v_free = p.y.v + h * a;
+        const double jump = h * c_.contact->friction * press;  // Coulomb: |dv| <= mu N h / m
+        const double speed = glm::length(v_free);
+        const bool was_moving = p.y.v != Vec3(0.0);
+        const Vec3 v_new = speed <= jump ? Vec3(0.0) : v_free * (1.0 - jump / speed);
+        p.friction_loss += 0.5 * (speed * speed - glm::dot(v_new, v_new));
+        p.y.drag_loss += h * d.drag_power;
+        p.y.wind_gain += h * d.wind_power;
+        p.y.v = v_new;
+        if (was_moving && v_new == Vec3(0.0))
+            c_.events->push_back({t + h, id, -1, EventKind::stop, glm::length(v_free), 0.0});
+        if (v_new == Vec3(0.0)) return;
+        // Straight-line motion along the walls: walls it slides into are found exactly.
+        double remaining = h;
+        for (int guard = 0; guard < 16 && remaining > 0.0; ++guard) {
+            const Vec3 end = p.y.x + remaining * p.y.v;
+            int wall = -1;
+            double s_hit = remaining;
+            for (int w = 0; w < wall_count; ++w) {
+                const double d_end = c_.room->distance(w, end, p.radius);
+                if (d_end >= 0.0) continue;
+                const double d0 = std::max(0.0, c_.room->distance(w, p.y.x, p.radius));
+                const double s = remaining * d0 / (d0 - d_end);
+                if (wall < 0 || s < s_hit) { wall = w; s_hit = s; }
+            }
+            if (wall < 0) {
+                p.y.x = end;
+                break;
+            }
+            p.y.x += s_hit * p.y.v;
+            p.y.x[RoomBounds::axis(wall)] = c_.room->contact_plane(wall, p.radius);
+            remaining -= s_hit;
+            hit_wall(p, id, wall, t + h - remaining);
+            if (p.y.v == Vec3(0.0)) {
+                c_.events->push_back({t + h - remaining, id, -1, EventKind::stop, 0.0, 0.0});
+                break;
+            }
+        }
+        p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
+    }
+
+    const StepContext& c_;
+    const F& f_;
+};
+
+}  // namespace pl

@@ -1,0 +1,23 @@
+#include "physics/stepping/relaunch.hpp"
+
+#include "physics/stepping/contact.hpp"
+#include "physics/stepping/energy.hpp"
+
+namespace pl {
+
+void relaunch_particle(Simulation& sim, std::size_t i, const Vec3& position, const Vec3& velocity) {
+    ParticleState& s = sim.mutable_state();
+    const Model& m = sim.model();
+    const double mass = s.mass[i];
+    const Vec3 inside = RoomBounds(m.room).clamp_inside(position, s.radius[i]);
+    const double before = kinetic_energy(mass, s.velocity(i)) + potential_energy(m.world.gravity, m.room, mass, s.position(i));
+    const double after = kinetic_energy(mass, velocity) + potential_energy(m.world.gravity, m.room, mass, inside);
+    s.initial_energy[i] += after - before;
+    s.resting[i] = 0;
+    s.frozen[i] = 0;
+    s.set_position(i, inside);
+    sim.set_velocity(i, velocity);
+    if (!sim.adaptive_step_hint().empty()) sim.adaptive_step_hint()[i] = 0.0;  // dopri5 picks a fresh first step
+}
+
+}  // namespace pl

@@ -1,0 +1,138 @@
+// Simulation: advances one Model's particles by fixed steps of model.integrator.dt.
+// The force sum is assembled from the model once, at construction: terms the model does not
+// enable (drag, wind) are compiled out of the stepping kernel and never evaluated.
+#pragma once
+
+#include "physics/model/drag.hpp"
+#include "physics/stepping/events.hpp"
+#include "physics/stepping/particle_state.hpp"
+#include "physics/model/scene.hpp"
+#include "physics/stepping/warnings.hpp"
+#include "physics/model/wind.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pl {
+
+// How often each force term was evaluated (one count per particle per evaluation).
+struct ForceCounters {
+    std::uint64_t gravity = 0, drag = 0, wind = 0;
+    std::uint64_t rejected_steps = 0;  // dopri5 only
+    std::uint64_t accepted_steps = 0;  // dopri5 internal steps
+    std::uint64_t contacts = 0;        // time-of-impact solves
+    std::uint64_t fast_path = 0;       // particle-steps the vectorised fast path finished
+};
+
+// What the monitor's scan found in a range of particles: the largest drag stiffness and, in
+// particle order, the particles that crossed a limit they have not been warned about yet.
+struct MonitorScan {
+    double max_stiffness = 0.0;
+    ReRange reynolds{INFINITY, 0.0};  // of the particles in flight; empty (lo > hi) if none flew
+    std::vector<std::uint32_t> suspects;
+};
+
+class Simulation;
+// A stepping kernel advances a simulation by `steps` (>= 1) fixed steps. For each step, in
+// order, it appends that step's events, raises its warnings and calls Simulation::finish_step(),
+// so that one call of `steps` steps leaves exactly what `steps` calls of one step would.
+using StepKernel = void (*)(Simulation&, std::uint32_t steps);
+
+// fast: the production kernel (fast_kernel.hpp: vectorised flight, threads); generic: the
+// scalar reference kernel, one ParticleStepper::advance per particle. Results are bit-identical.
+enum class KernelChoice : std::uint8_t { fast, generic };
+
+class Simulation {
+public:
+    Simulation(Model model, const std::vector<ParticleSpec>& particles);
+
+    void step();  // exactly one fixed step of model().integrator.dt
+    // n steps; the same result as n calls of step(). Large scenes advance each block of
+    // particles through several steps while it is in cache (up to steps_per_kernel_call per
+    // kernel call, ending where the monitor samples), so this is the faster way to take many.
+    void step_n(std::uint64_t n);
+    static constexpr std::uint64_t steps_per_kernel_call = 32;
+    // Steps until time() >= t (whole steps only; t is rounded to the step grid).
+    void run_until(double t);
+    // How many whole steps from now end at or before time t (the lockstep rule of Experiment).
+    std::uint64_t steps_to(double t) const;
+
+    double time() const { return static_cast<double>(steps_) * model_.integrator.dt; }
+    double dt() const { return model_.integrator.dt; }
+    std::uint64_t step_count() const { return steps_; }
+    const Model& model() const { return model_; }
+    const ParticleState& state() const { return state_; }
+    std::size_t particle_count() const { return state_.size(); }
+    const WindField& wind() const { return wind_; }
+    // Whether every particle has the same mass, radius and drag coefficients (set at
+    // construction, the only place they are written): kernels then read them once.
+    bool identical_particles() const { return identical_particles_; }
+
+    // Threads for the particle loop: 0 = all hardware threads (the default), 1 = single-threaded.
+    // Results are bit-identical for every setting; small scenes always run on one thread.
+    void set_threads(int threads) { threads_ = threads < 0 ? 0 : threads; }
+    int threads() const { return threads_; }
+    void set_kernel(KernelChoice choice);
+    KernelChoice kernel() const { return kernel_choice_; }
+
+    // Sets a particle's velocity (a kick); it leaves any wall it is pushed away from.
+    void set_velocity(std::size_t i, const Vec3& v);
+    // Net acceleration a particle feels at its current state (no contact forces).
+    Vec3 acceleration(std::size_t i) const;
+    // A particle's velocity relative to the air at its position now (v - wind).
+    Vec3 air_velocity(std::size_t i) const;
+    // Reynolds number of a particle's motion relative to the air now (0 without drag).
+    double reynolds_number(std::size_t i) const;
+
+    // Events since the last drain (the simulation appends; consumers take them).
+    const std::vector<Event>& events() const { return events_; }
+    std::vector<Event> drain_events();
+    // At most this many undrained events are kept; older ones are dropped and counted.
+    static constexpr std::size_t max_pending_events = 1u << 20;
+    std::uint64_t dropped_events() const { return dropped_events_; }
+    const std::vector<Warning>& warnings() const { return warnings_; }
+    const ForceCounters& counters() const { return counters_; }
+
+    // Reynolds numbers the monitor has seen (at its samples, over the moving particles that are
+    // neither on a wall nor frozen); lo > hi while none has flown, and without drag.
+    ReRange observed_reynolds() const { return reynolds_; }
+    // Largest drag stiffness k (1/s) seen so far, over all particles.
+    double max_drag_stiffness() const { return max_stiffness_; }
+
+    // Kernel plumbing (used by the kernels in simulation_kernels.cpp).
+    ParticleState& mutable_state() { return state_; }
+    std::vector<Event>& event_sink() { return events_; }
+    ForceCounters& mutable_counters() { return counters_; }
+    // Ends one step of a kernel call: the step counter and the cap on undrained events.
+    void finish_step();
+    // Records a warning at time() unless this particle had one of this kind already.
+    void raise(WarningKind kind, std::uint32_t particle, double value = 0.0);
+
+private:
+    void monitor();  // NaN guard, validity ranges, stability guard
+    std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
+
+    Model model_;
+    WindField wind_;
+    ParticleState state_;
+    StepKernel kernel_ = nullptr;
+    KernelChoice kernel_choice_ = KernelChoice::fast;
+    int threads_ = 0;
+    bool identical_particles_ = false;
+    std::uint64_t steps_ = 0;
+    std::vector<Event> events_;
+    std::uint64_t dropped_events_ = 0;
+    std::vector<Warning> warnings_;
+    std::vector<std::uint8_t> warned_;  // per particle: bit per WarningKind
+    ForceCounters counters_;
+    ReRange reynolds_{INFINITY, 0.0};
+    double max_stiffness_ = 0.0;
+    std::vector<MonitorScan> scans_;  // one per particle range, kept from sample to sample
+    std::vector<double> adaptive_step_hint_;  // dopri5: last accepted internal step per particle
+public:
+    std::vector<double>& adaptive_step_hint() { return adaptive_step_hint_; }
+};
+
+}  // namespace pl

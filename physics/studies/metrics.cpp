@@ -1,0 +1,199 @@
+#include "physics/studies/metrics.hpp"
+
+#include "physics/stepping/energy.hpp"
+#include "physics/stepping/thread_pool.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace pl {
+
+namespace {
+
+double horizontal_distance(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.z - b.z); }
+
+bool is_impact(const Event& e) {
+    return e.wall >= 0 && (e.kind == EventKind::bounce || e.kind == EventKind::rest);
+}
+
+std::optional<double> optional_difference(const std::optional<double>& a, const std::optional<double>& b) {
+    if (a && b) return *a - *b;
+    return std::nullopt;
+}
+
+}  // namespace
+
+MetricsTracker start_metrics(const Simulation& sim) {
+    MetricsTracker m;
+    const ParticleState& s = sim.state();
+    const std::size_t n = s.size();
+    m.floor_y = sim.model().room.floor_y();
+    m.start_position.resize(n);
+    m.prev_velocity.resize(n);
+    m.particles.resize(n);
+    m.stopped_since.assign(n, std::nullopt);
+    for (std::size_t i = 0; i < n; ++i) {
+        m.start_position[i] = s.position(i);
+        m.prev_velocity[i] = s.velocity(i);
+        m.particles[i].apex_height = s.y[i] - m.floor_y;
+        m.particles[i].apex_time = sim.time();
+    }
+    m.prev_position = m.start_position;
+    m.prev_time = sim.time();
+    return m;
+}
+
+void observe_step(MetricsTracker& m, const Simulation& sim, const std::vector<Event>& new_events,
+                  double physics_seconds) {
+    for (const Event& e : new_events) {
+        if (e.particle >= m.particles.size()) continue;
+        ParticleMetrics& p = m.particles[e.particle];
+        if (is_impact(e) && !p.first_impact_time) {
+            p.first_impact_time = e.t;
+            p.first_impact_wall = e.wall;
+            const Vec3 at = m.prev_position[e.particle] + (e.t - m.prev_time) * m.prev_velocity[e.particle];
+            p.range_at_first_impact = horizontal_distance(at, m.start_position[e.particle]);
+        }
+        if (e.kind == EventKind::bounce && e.wall >= 0) ++p.bounces;
+        if ((e.kind == EventKind::rest || e.kind == EventKind::stop) && e.speed_out == 0.0)
+            m.stopped_since[e.particle] = e.t;
+    }
+    const ParticleState& s = sim.state();
+    const double t = sim.time();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const double height = s.y[i] - m.floor_y;
+        if (height > m.particles[i].apex_height) {
+            m.particles[i].apex_height = height;
+            m.particles[i].apex_time = t;
+        }
+        m.prev_position[i] = s.position(i);
+        m.prev_velocity[i] = s.velocity(i);
+    }
+    m.prev_time = t;
+    m.physics_seconds += physics_seconds;
+}
+
+VariantMetrics metrics_of(const MetricsTracker& m, const Simulation& sim) {
+    VariantMetrics out;
+    out.label = sim.model().label;
+    out.particles = m.particles;
+    const ParticleState& s = sim.state();
+    bool all_rest = s.size() > 0;
+    double latest_rest = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        ParticleMetrics& p = out.particles[i];
+        p.final_range = horizontal_distance(s.position(i), m.start_position[i]);
+        const bool at_rest = s.resting[i] != 0 && !s.frozen[i] && s.velocity(i) == Vec3(0.0);
+        p.time_to_rest = at_rest ? m.stopped_since[i] : std::nullopt;
+        if (p.time_to_rest) latest_rest = std::max(latest_rest, *p.time_to_rest);
+        else all_rest = false;
+        p.lost_drag = s.dissipated_drag[i];
+        p.lost_bounce = s.dissipated_bounce[i];
+        p.lost_friction = s.dissipated_friction[i];
+        p.wind_work = s.wind_work[i];
+        out.lost_drag += p.lost_drag;
+        out.lost_bounce += p.lost_bounce;
+        out.lost_friction += p.lost_friction;
+        out.wind_work += p.wind_work;
+    }
+    if (all_rest) out.all_at_rest_time = latest_rest;
+    out.energy_residual = total_energy(s, sim.model().world.gravity, sim.model().room).residual();
+    out.simulated_seconds = sim.time();
+    out.steps = sim.step_count();
+    out.physics_seconds = m.physics_seconds;
+    return out;
+}
+
+MetricsDifference metrics_difference(const VariantMetrics& value, const VariantMetrics& baseline,
+                                     std::size_t particle) {
+    MetricsDifference d;
+    if (particle < value.particles.size() && particle < baseline.particles.size()) {
+        const ParticleMetrics& a = value.particles[particle];
+        const ParticleMetrics& b = baseline.particles[particle];
+        d.first_impact_time = optional_difference(a.first_impact_time, b.first_impact_time);
+        d.range_at_first_impact = optional_difference(a.range_at_first_impact, b.range_at_first_impact);
+        d.time_to_rest = optional_difference(a.time_to_rest, b.time_to_rest);
+        d.apex_height = a.apex_height - b.apex_height;
+        d.final_range = a.final_range - b.final_range;
+        d.bounces = static_cast<long long>(a.bounces) - static_cast<long long>(b.bounces);
+    }
+    d.all_at_rest_time = optional_difference(value.all_at_rest_time, baseline.all_at_rest_time);
+    d.lost_drag = value.lost_drag - baseline.lost_drag;
+    d.lost_bounce = value.lost_bounce - baseline.lost_bounce;
+    d.lost_friction = value.lost_friction - baseline.lost_friction;
+    d.cost = value.cost() - baseline.cost();
+    return d;
+}
+
+std::uint64_t catch_up(Simulation& sim, double t) {
+    const std::uint64_t n = sim.steps_to(t);
+    sim.step_n(n);
+    return n;
+}
+
+DurationPlan plan_duration(const Scene& scene, double duration_s) {
+    DurationPlan plan;
+    if (!(duration_s > 0.0) || !std::isfinite(duration_s)) {
+        plan.error = fmt::format("must be a finite number > 0, got {}", duration_s);
+        return plan;
+    }
+    plan.base_dt = INFINITY;
+    for (std::size_t v = 0; v < variant_count(scene); ++v) {
+        const Model m = model_for_variant(scene, v);
+        const double dt = m.integrator.dt;
+        const double steps = duration_s / dt;
+        if (std::abs(steps - std::round(steps)) > 1e-9 * std::max(1.0, steps) || std::round(steps) < 1.0) {
+            const double nearest = std::max(1.0, std::round(steps)) * dt;
+            plan.error = fmt::format("{} s is not a whole number of steps of dt = {} s{}; the nearest is {} s",
+                                     duration_s, dt, m.label.empty() ? "" : fmt::format(" (variant '{}')", m.label),
+                                     nearest);
+            return plan;
+        }
+        plan.base_dt = std::min(plan.base_dt, dt);
+    }
+    plan.base_steps = static_cast<std::uint64_t>(std::llround(duration_s / plan.base_dt));
+    return plan;
+}
+
+Comparison run_comparison(const Scene& scene, const CompareOptions& options) {
+    Comparison out;
+    out.duration_s = options.duration_s;
+    const DurationPlan plan = plan_duration(scene, options.duration_s);
+    if (!plan.error.empty()) {
+        out.error = plan.error;
+        return out;
+    }
+    const std::vector<ParticleSpec> particles = initial_particles(scene);
+    std::vector<Simulation> sims;
+    std::vector<MetricsTracker> trackers;
+    for (std::size_t v = 0; v < variant_count(scene); ++v) {
+        sims.emplace_back(model_for_variant(scene, v), particles);
+        // An explicit count (same results as 0 = all) spares a hardware query on every step.
+        sims.back().set_threads(hardware_threads());
+        trackers.push_back(start_metrics(sims.back()));
+    }
+    using clock = std::chrono::steady_clock;
+    const std::uint64_t report_every = std::max<std::uint64_t>(1, plan.base_steps / 100);
+    for (std::uint64_t k = 1; k <= plan.base_steps; ++k) {
+        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+            out.cancelled = true;
+            break;
+        }
+        const double t = static_cast<double>(k) * plan.base_dt;
+        for (std::size_t v = 0; v < sims.size(); ++v) {
+            const auto start = clock::now();
+            const std::uint64_t n = catch_up(sims[v], t);
+            const double seconds = std::chrono::duration<double>(clock::now() - start).count();
+            if (n > 0) observe_step(trackers[v], sims[v], sims[v].drain_events(), seconds);
+        }
+        if (options.progress && k % report_every == 0)
+            options.progress(static_cast<double>(k) / static_cast<double>(plan.base_steps));
+    }
+    for (std::size_t v = 0; v < sims.size(); ++v) out.variants.push_back(metrics_of(trackers[v], sims[v]));
+    return out;
+}
+
+}  // namespace pl
