@@ -44,6 +44,7 @@
 #include "io/preset_io.hpp"
 
 #include "io/preset_reader.hpp"
+#include "io/preset_writer.hpp"
 
 #include <fmt/format.h>
 
@@ -226,86 +227,6 @@ std::string strip_exception_id(const std::string& what) {
 
 // ------------------------------------------------------------------ serialising
 
-PresetJson vec_json(const Vec3& v) { return PresetJson::array({v.x, v.y, v.z}); }
-
-PresetJson air_json(const Air& a) { return {{"density", a.density_kg_m3}, {"viscosity", a.viscosity_pa_s}}; }
-
-PresetJson wind_json(const WindSettings& w) {
-    return {{"kind", to_string(w.kind)},
-            {"velocity", vec_json(w.velocity)},
-            {"amplitude", vec_json(w.gust_amplitude)},
-            {"period", w.gust_period_s},
-            {"seed", w.gust_seed},
-            {"reference_height", w.reference_height_m},
-            {"exponent", w.shear_exponent},
-            {"center", vec_json(w.vortex_center)},
-            {"axis", vec_json(w.vortex_axis)},
-            {"max_speed", w.vortex_max_speed},
-            {"core_radius", w.vortex_core_radius_m}};
-}
-
-PresetJson drag_json(const DragSettings& d) {
-    // b is always written (null = Stokes from the air) so that a variant's drag section never
-    // inherits the scene's b on reload.
-    return {{"model", to_string(d.model)}, {"cd", d.cd}, {"b", d.linear_b ? PresetJson(*d.linear_b) : PresetJson(nullptr)}};
-}
-
-PresetJson contact_json(const ContactSettings& c) {
-    return {{"restitution", c.restitution}, {"friction", c.friction}, {"rest_speed", c.rest_speed}};
-}
-
-PresetJson integrator_json(const IntegratorSettings& s) {
-    return {{"method", to_string(s.method)}, {"dt", s.dt}, {"rtol", s.rtol}, {"atol", s.atol}, {"adaptive", s.adaptive}};
-}
-
-PresetJson particle_json(const ParticleSpec& p) {
-    return {{"position", vec_json(p.position)}, {"velocity", vec_json(p.velocity)}, {"mass", p.mass}, {"radius", p.radius}};
-}
-
-PresetJson emitter_json(const Emitter& e) {
-    return {{"count", static_cast<std::uint64_t>(e.count)},
-            {"seed", e.seed},
-            {"region_min", vec_json(e.region_min)},
-            {"region_max", vec_json(e.region_max)},
-            {"speed_min", e.speed_min},
-            {"speed_max", e.speed_max},
-            {"direction", vec_json(e.direction)},
-            {"spread_deg", e.spread_deg},
-            {"mass_min", e.mass_min},
-            {"mass_max", e.mass_max},
-            {"radius_min", e.radius_min},
-            {"radius_max", e.radius_max}};
-}
-
-PresetJson variant_json(const Variant& v) {
-    PresetJson j = {{"label", v.label}};
-    if (v.drag) j["drag"] = drag_json(*v.drag);
-    if (v.wind) j["wind"] = wind_json(*v.wind);
-    if (v.air) j["air"] = air_json(*v.air);
-    if (v.contact) j["contact"] = contact_json(*v.contact);
-    if (v.integrator) j["integrator"] = integrator_json(*v.integrator);
-    return j;
-}
-
-PresetJson scene_json(const Scene& s) {
-    PresetJson j;
-    j["format"] = "particle-lab-preset";
-    j["version"] = 1;
-    j["name"] = s.name;
-    j["description"] = s.description;
-    j["room"] = {{"center", vec_json(s.room.center)}, {"size", vec_json(s.room.size)}};
-    j["world"] = {{"gravity", vec_json(s.world.gravity)}, {"air", air_json(s.world.air)}, {"wind", wind_json(s.world.wind)}};
-    j["drag"] = drag_json(s.drag);
-    j["contact"] = contact_json(s.contact);
-    j["integrator"] = integrator_json(s.integrator);
-    j["particles"] = PresetJson::array();
-    for (const ParticleSpec& p : s.particles) j["particles"].push_back(particle_json(p));
-    if (s.emitter) j["emitter"] = emitter_json(*s.emitter);
-    j["variants"] = PresetJson::array();
-    for (const Variant& v : s.variants) j["variants"].push_back(variant_json(v));
-    return j;
-}
-
 // Scalars use nlohmann's own dump: doubles in the shortest form that reads back to the same value.
 std::string scalar_text(const PresetJson& j) { return j.dump(-1, ' ', false, PresetJson::error_handler_t::replace); }
 
@@ -476,7 +397,7 @@ LoadResult load_preset(const std::filesystem::path& file) {
 
 std::string serialize_preset(const Scene& scene) {
     std::string out;
-    write_pretty(scene_json(scene), 0, out);
+    write_pretty(preset_document(scene), 0, out);
     out += '\n';
     return out;
 }
