@@ -1,46 +1,8 @@
-// Preset files: JSON text <-> Scene.
-//
-// Format "particle-lab-preset", version 1. Keys (SI units; [x, y, z] arrays; y is up):
-//
-//   format        "particle-lab-preset"                                          required
-//   version       1                                                              required
-//   name          string                                      default "Untitled"
-//   description   string                                      default ""
-//   room          { center [m], size [m] }                                       required
-//                   size > 0 in every axis, <= 1e6
-//   world         { gravity [m/s^2]                           default [0, -9.81, 0]
-//                   air  { density [kg/m^3]                   default 1.225 (sea level)
-//                          viscosity [Pa s] }                 default 1.81e-5
-//                   wind { kind: none | constant | gust | shear | vortex     default none
-//                          velocity [m/s]       constant: the wind; gust: the mean;
-//                                               shear: the wind at reference_height
-//                          amplitude [m/s]      gust: bounded variation per axis
-//                          period [s]           gust: dominant period of the variation
-//                          seed                 gust: seed of the variation (integer >= 0)
-//                          reference_height [m] shear: height above the floor where |w| = |velocity|
-//                          exponent             shear: power-law (Hellmann) exponent, 0..1
-//                          center [m]           vortex: a point on the axis
-//                          axis                 vortex: axis direction (not zero)
-//                          max_speed [m/s]      vortex: tangential speed at core_radius
-//                          core_radius [m] } }  vortex: radius of the solid-body core
-//   drag          { model: none | linear | quadratic | sphere_re           default none
-//                   cd                          quadratic: drag coefficient, default 0.47
-//                   b [N s/m] }                 linear: explicit coefficient; null or omitted: Stokes 6 pi mu R
-//   contact       { restitution (0..1), friction (Coulomb mu >= 0), rest_speed [m/s] }
-//   integrator    { method: explicit_euler | semi_implicit_euler | velocity_verlet | rk4 | dopri5 | exponential
-//                   dt [s] (0 < dt <= 1), rtol, atol, adaptive (dopri5 only: true/false) }
-//   particles     [ { position [m] (required), velocity [m/s], mass [kg], radius [m] } ]
-//   emitter       { count (required), seed, region_min [m], region_max [m], speed_min [m/s],
-//                   speed_max [m/s], direction, spread_deg (0..180), mass_min [kg], mass_max [kg],
-//                   radius_min [m], radius_max [m] }
-//   variants      [ { label (required, unique), drag, wind, air, contact, integrator } ]
-//                   each section has the same keys as above; it starts from the scene's own
-//                   section, so a variant need only name what differs.
-//
-// Omitted sections and fields take the Scene defaults (scene.hpp). At least one particle is
-// required (from `particles`, `emitter`, or both). Unknown keys, duplicate keys, wrong types,
-// non-finite numbers (1e400 overflows to infinity) and out-of-range values are errors; every one
-// is reported with its JSON path. Saved files list every field, defaults included.
+// Preset files: JSON text <-> Scene (parsing, UTF-8 and overflow handling, pretty printing,
+// atomic saving). The format itself (every key, unit, bound and default) is defined once by the
+// rows in physics/model/schema/*_fields.hpp; `particle-lab validate --format` prints it, and
+// README.md ("Presets") embeds that text. The reader and the writer that iterate the rows are
+// io/preset_reader.cpp and io/preset_writer.cpp.
 #include "io/preset_io.hpp"
 
 #include "io/preset_reader.hpp"
