@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace pl {
 namespace {
@@ -134,6 +136,35 @@ std::string preset_format_reference() {
         "non-finite numbers (1e400 overflows to infinity) and out-of-range values are errors; every\n"
         "one is reported with its JSON path. Saved files list every field, defaults included.\n",
         schema::max_particles);
+    return out;
+}
+
+}  // namespace pl
+
+namespace pl {
+namespace {
+
+void collect_tokens(const schema::SchemaNode& n, std::vector<std::string>& tokens) {
+    const auto add = [&](const std::string& t) {
+        if (std::find(tokens.begin(), tokens.end(), t) == tokens.end()) tokens.push_back(t);
+    };
+    for (const schema::SchemaNode& c : n.children) {
+        add(c.key);
+        if (c.field.kind == schema::FieldKind::format_tag) add(schema::preset_format_name);
+        if (c.shape == schema::NodeShape::field && c.field.kind == schema::FieldKind::enumeration)
+            for (int i = 0; i < c.field.names.count; ++i) add(c.field.names.name(i));
+        collect_tokens(c, tokens);
+    }
+}
+
+}  // namespace
+
+std::string preset_fuzz_dictionary() {
+    std::vector<std::string> tokens;
+    collect_tokens(schema::preset_schema_tree(), tokens);
+    std::string out;
+    // Keys and names are identifiers: no character needs escaping beyond the quotes.
+    for (const std::string& t : tokens) out += "\"\\\"" + t + "\\\"\"\n";
     return out;
 }
 

@@ -17,3 +17,11 @@ std::string default_text(const schema::DefaultValue& v);
 std::string bounds_text(const schema::Bounds& b);
 
 }  // namespace pl
+
+namespace pl {
+
+// libFuzzer dictionary lines ("\"key\"") for every key, the format's name and every enumeration
+// value, each once, in the order the format reference lists them.
+std::string preset_fuzz_dictionary();
+
+}  // namespace pl

@@ -3,6 +3,7 @@
 #include "cli/cli_support.hpp"
 
 #include "io/preset_json_schema.hpp"
+#include "io/preset_reference.hpp"
 
 #include <memory>
 
@@ -13,9 +14,13 @@ void add_schema_command(CLI::App& app, int& exit_code) {
     cmd->footer(
         "Print the preset format as a JSON Schema (draft 2020-12), generated from the preset rows.\n"
         "A schema cannot state every rule (a particle must fit the room, labels be unique, keys\n"
-        "appear once): 'particle-lab validate' is the full check.");
-    cmd->callback([&exit_code] {
-        std::fputs(preset_json_schema().c_str(), stdout);
+        "appear once): 'particle-lab validate' is the full check. --fuzz-dict prints the tokens of\n"
+        "fuzz/preset.dict instead.");
+    auto fuzz_dict = std::make_shared<bool>(false);
+    cmd->add_flag("--fuzz-dict", *fuzz_dict,
+                  "print the libFuzzer dictionary tokens of the format instead (every key and enumeration value)");
+    cmd->callback([fuzz_dict, &exit_code] {
+        std::fputs((*fuzz_dict ? preset_fuzz_dictionary() : preset_json_schema()).c_str(), stdout);
         exit_code = exit_ok;
     });
 }
