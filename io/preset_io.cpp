@@ -1,49 +1,12 @@
-// Preset files: JSON text <-> Scene.
-//
-// Format "particle-lab-preset", version 1. Keys (SI units; [x, y, z] arrays; y is up):
-//
-//   format        "particle-lab-preset"                                          required
-//   version       1                                                              required
-//   name          string                                      default "Untitled"
-//   description   string                                      default ""
-//   room          { center [m], size [m] }                                       required
-//                   size > 0 in every axis, <= 1e6
-//   world         { gravity [m/s^2]                           default [0, -9.81, 0]
-//                   air  { density [kg/m^3]                   default 1.225 (sea level)
-//                          viscosity [Pa s] }                 default 1.81e-5
-//                   wind { kind: none | constant | gust | shear | vortex     default none
-//                          velocity [m/s]       constant: the wind; gust: the mean;
-//                                               shear: the wind at reference_height
-//                          amplitude [m/s]      gust: bounded variation per axis
-//                          period [s]           gust: dominant period of the variation
-//                          seed                 gust: seed of the variation (integer >= 0)
-//                          reference_height [m] shear: height above the floor where |w| = |velocity|
-//                          exponent             shear: power-law (Hellmann) exponent, 0..1
-//                          center [m]           vortex: a point on the axis
-//                          axis                 vortex: axis direction (not zero)
-//                          max_speed [m/s]      vortex: tangential speed at core_radius
-//                          core_radius [m] } }  vortex: radius of the solid-body core
-//   drag          { model: none | linear | quadratic | sphere_re           default none
-//                   cd                          quadratic: drag coefficient, default 0.47
-//                   b [N s/m] }                 linear: explicit coefficient; null or omitted: Stokes 6 pi mu R
-//   contact       { restitution (0..1), friction (Coulomb mu >= 0), rest_speed [m/s] }
-//   integrator    { method: explicit_euler | semi_implicit_euler | velocity_verlet | rk4 | dopri5 | exponential
-//                   dt [s] (0 < dt <= 1), rtol, atol, adaptive (dopri5 only: true/false) }
-//   particles     [ { position [m] (required), velocity [m/s], mass [kg], radius [m] } ]
-//   emitter       { count (required), seed, region_min [m], region_max [m], speed_min [m/s],
-//                   speed_max [m/s], direction, spread_deg (0..180), mass_min [kg], mass_max [kg],
-//                   radius_min [m], radius_max [m] }
-//   variants      [ { label (required, unique), drag, wind, air, contact, integrator } ]
-//                   each section has the same keys as above; it starts from the scene's own
-//                   section, so a variant need only name what differs.
-//
-// Omitted sections and fields take the Scene defaults (scene.hpp). At least one particle is
-// required (from `particles`, `emitter`, or both). Unknown keys, duplicate keys, wrong types,
-// non-finite numbers (1e400 overflows to infinity) and out-of-range values are errors; every one
-// is reported with its JSON path. Saved files list every field, defaults included.
+// Preset files: JSON text <-> Scene (parsing, UTF-8 and overflow handling, pretty printing,
+// atomic saving). The format itself (every key, unit, bound and default) is defined once by the
+// rows in physics/model/schema/*_fields.hpp; `particle-lab validate --format` prints it, and
+// README.md ("Presets") embeds that text. The reader and the writer that iterate the rows are
+// io/preset_reader.cpp and io/preset_writer.cpp.
 #include "io/preset_io.hpp"
 
 #include "io/preset_reader.hpp"
+#include "io/preset_writer.hpp"
 
 #include <fmt/format.h>
 
@@ -226,86 +189,6 @@ std::string strip_exception_id(const std::string& what) {
 
 // ------------------------------------------------------------------ serialising
 
-PresetJson vec_json(const Vec3& v) { return PresetJson::array({v.x, v.y, v.z}); }
-
-PresetJson air_json(const Air& a) { return {{"density", a.density_kg_m3}, {"viscosity", a.viscosity_pa_s}}; }
-
-PresetJson wind_json(const WindSettings& w) {
-    return {{"kind", to_string(w.kind)},
-            {"velocity", vec_json(w.velocity)},
-            {"amplitude", vec_json(w.gust_amplitude)},
-            {"period", w.gust_period_s},
-            {"seed", w.gust_seed},
-            {"reference_height", w.reference_height_m},
-            {"exponent", w.shear_exponent},
-            {"center", vec_json(w.vortex_center)},
-            {"axis", vec_json(w.vortex_axis)},
-            {"max_speed", w.vortex_max_speed},
-            {"core_radius", w.vortex_core_radius_m}};
-}
-
-PresetJson drag_json(const DragSettings& d) {
-    // b is always written (null = Stokes from the air) so that a variant's drag section never
-    // inherits the scene's b on reload.
-    return {{"model", to_string(d.model)}, {"cd", d.cd}, {"b", d.linear_b ? PresetJson(*d.linear_b) : PresetJson(nullptr)}};
-}
-
-PresetJson contact_json(const ContactSettings& c) {
-    return {{"restitution", c.restitution}, {"friction", c.friction}, {"rest_speed", c.rest_speed}};
-}
-
-PresetJson integrator_json(const IntegratorSettings& s) {
-    return {{"method", to_string(s.method)}, {"dt", s.dt}, {"rtol", s.rtol}, {"atol", s.atol}, {"adaptive", s.adaptive}};
-}
-
-PresetJson particle_json(const ParticleSpec& p) {
-    return {{"position", vec_json(p.position)}, {"velocity", vec_json(p.velocity)}, {"mass", p.mass}, {"radius", p.radius}};
-}
-
-PresetJson emitter_json(const Emitter& e) {
-    return {{"count", static_cast<std::uint64_t>(e.count)},
-            {"seed", e.seed},
-            {"region_min", vec_json(e.region_min)},
-            {"region_max", vec_json(e.region_max)},
-            {"speed_min", e.speed_min},
-            {"speed_max", e.speed_max},
-            {"direction", vec_json(e.direction)},
-            {"spread_deg", e.spread_deg},
-            {"mass_min", e.mass_min},
-            {"mass_max", e.mass_max},
-            {"radius_min", e.radius_min},
-            {"radius_max", e.radius_max}};
-}
-
-PresetJson variant_json(const Variant& v) {
-    PresetJson j = {{"label", v.label}};
-    if (v.drag) j["drag"] = drag_json(*v.drag);
-    if (v.wind) j["wind"] = wind_json(*v.wind);
-    if (v.air) j["air"] = air_json(*v.air);
-    if (v.contact) j["contact"] = contact_json(*v.contact);
-    if (v.integrator) j["integrator"] = integrator_json(*v.integrator);
-    return j;
-}
-
-PresetJson scene_json(const Scene& s) {
-    PresetJson j;
-    j["format"] = "particle-lab-preset";
-    j["version"] = 1;
-    j["name"] = s.name;
-    j["description"] = s.description;
-    j["room"] = {{"center", vec_json(s.room.center)}, {"size", vec_json(s.room.size)}};
-    j["world"] = {{"gravity", vec_json(s.world.gravity)}, {"air", air_json(s.world.air)}, {"wind", wind_json(s.world.wind)}};
-    j["drag"] = drag_json(s.drag);
-    j["contact"] = contact_json(s.contact);
-    j["integrator"] = integrator_json(s.integrator);
-    j["particles"] = PresetJson::array();
-    for (const ParticleSpec& p : s.particles) j["particles"].push_back(particle_json(p));
-    if (s.emitter) j["emitter"] = emitter_json(*s.emitter);
-    j["variants"] = PresetJson::array();
-    for (const Variant& v : s.variants) j["variants"].push_back(variant_json(v));
-    return j;
-}
-
 // Scalars use nlohmann's own dump: doubles in the shortest form that reads back to the same value.
 std::string scalar_text(const PresetJson& j) { return j.dump(-1, ' ', false, PresetJson::error_handler_t::replace); }
 
@@ -476,7 +359,7 @@ LoadResult load_preset(const std::filesystem::path& file) {
 
 std::string serialize_preset(const Scene& scene) {
     std::string out;
-    write_pretty(scene_json(scene), 0, out);
+    write_pretty(preset_document(scene), 0, out);
     out += '\n';
     return out;
 }

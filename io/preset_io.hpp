@@ -5,6 +5,7 @@
 #pragma once
 
 #include "physics/model/scene.hpp"
+#include "physics/model/schema/limits.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -40,7 +41,7 @@ struct SaveResult {
 SaveResult save_preset(const std::filesystem::path& file, const Scene& scene);
 
 // Largest particle count a preset may ask for (explicit + emitted).
-constexpr std::size_t max_preset_particles = 2'000'000;
+constexpr std::size_t max_preset_particles = schema::max_particles;
 
 // Largest preset file load_preset reads (and save_preset writes), in bytes.
 constexpr std::size_t max_preset_file_bytes = 64u << 20;

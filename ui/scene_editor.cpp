@@ -1,6 +1,8 @@
 #include "ui/scene_editor.hpp"
 
+#include "io/preset_reference.hpp"
 #include "physics/model/drag.hpp"
+#include "physics/model/schema/scene_fields.hpp"
 #include "ui/scene_validation.hpp"
 
 #include <imgui.h>
@@ -46,12 +48,14 @@ void SceneEditor::vec3(const char* label, const Vec3& value, const std::function
     if (v) commit([&](Scene& sc) { set(sc, *v); }, true);
 }
 
-void SceneEditor::integer(const char* label, std::uint64_t value, std::uint64_t max, const char* path,
-                          const std::function<void(Scene&, std::uint64_t)>& set, const char* help) {
+void SceneEditor::integer(const char* label, std::uint64_t value, const std::function<void(Scene&, std::uint64_t)>& set,
+                          const char* help) {
     const std::optional<double> v = input_number(panels_.fields, label, static_cast<double>(value), "%.0f", help);
     if (!v) return;
-    if (!(*v >= 0.0 && *v <= static_cast<double>(max) && std::floor(*v) == *v)) {
-        panels_.fields.resolve(std::string(path) + ": must be a whole number in [0, " + std::to_string(max) + "], got " +
+    // Only what a double cannot carry into a uint64 is refused here; the field's bound is the
+    // row's, checked with every other rule by scene_errors (the preset reader).
+    if (!(*v >= 0.0 && *v < 0x1.0p64 && std::floor(*v) == *v)) {
+        panels_.fields.resolve(std::string(label) + ": must be a whole number >= 0 (and below 2^64), got " +
                                std::to_string(*v));
         return;
     }
@@ -77,114 +81,160 @@ bool SceneEditor::apply(const std::function<void(Scene&)>& change) { return comm
 
 namespace {
 
-template <class Enum, std::size_t N>
-void enum_combo(SceneEditor& ed, const char* label, Enum current, const Enum (&values)[N],
-                const std::function<void(Scene&, Enum)>& set) {
-    if (!ImGui::BeginCombo(label, to_string(current))) return;
-    for (Enum e : values) {
+// "m/s^2" -> "m/s²" for the panel's labels.
+std::string pretty_unit(const char* unit) {
+    std::string u = unit;
+    for (const auto& [from, to] : {std::pair<const char*, const char*>{"^2", "²"}, {"^3", "³"}, {"deg", "°"}})
+        if (const std::size_t at = u.find(from); at != std::string::npos) u.replace(at, std::string(from).size(), to);
+    return u;
+}
+
+std::string field_label(const schema::FieldInfo& f) {
+    return f.unit[0] ? std::string(f.label) + " (" + pretty_unit(f.unit) + ")" : std::string(f.label);
+}
+
+// The row's help and, for numbers, its bounds (in the reader's words).
+std::string field_help(const schema::FieldInfo& f) {
+    switch (f.kind) {
+        case schema::FieldKind::number:
+        case schema::FieldKind::vec3:
+        case schema::FieldKind::optional_number: return std::string(f.help) + " Allowed: " + bounds_text(f.bounds) + ".";
+        case schema::FieldKind::bounded_vec3: return std::string(f.help) + " Length " + bounds_text(f.bounds) + ".";
+        default: return f.help;
+    }
+}
+
+void enum_combo(SceneEditor& ed, const char* label, int current, const schema::EnumNames& names,
+                const std::function<void(Scene&, int)>& set) {
+    if (!ImGui::BeginCombo(label, names.name(current))) return;
+    for (int e = 0; e < names.count; ++e) {
         const bool selected = e == current;
-        if (ImGui::Selectable(to_string(e), selected) && !selected) ed.apply([&](Scene& s) { set(s, e); });
+        if (ImGui::Selectable(names.name(e), selected) && !selected) ed.apply([&](Scene& s) { set(s, e); });
         if (selected) ImGui::SetItemDefaultFocus();
     }
     ImGui::EndCombo();
 }
 
-constexpr DragModel all_drag_models[] = {DragModel::none, DragModel::linear, DragModel::quadratic, DragModel::sphere_re};
-constexpr WindKind all_wind_kinds[] = {WindKind::none, WindKind::constant, WindKind::gust, WindKind::shear, WindKind::vortex};
-constexpr Method all_methods[] = {Method::explicit_euler, Method::semi_implicit_euler, Method::velocity_verlet,
-                                  Method::rk4,            Method::dopri5,              Method::exponential};
-
 }  // namespace
 
-void edit_drag_section(SceneEditor& ed, const std::function<DragSettings&(Scene&)>& at) {
-    const DragSettings d = at(ed.current());
-    enum_combo<DragModel>(ed, "drag model", d.model, all_drag_models, [&](Scene& s, DragModel m) { at(s).model = m; });
-    help_marker("none: no air resistance. linear: Stokes, F = -6 pi mu R v (or an explicit b). "
-                "quadratic: Newton, F = -1/2 rho Cd A |v| v. sphere_re: Cd(Re) for a smooth sphere over the "
-                "whole Reynolds range (Morrison 2013).");
-    const ReRange valid = drag_validity(d.model);
-    if (d.model != DragModel::none) ImGui::TextDisabled("valid for %.3g < Re < %.3g", valid.lo, valid.hi);
-    if (d.model == DragModel::quadratic)
-        ed.number("Cd", d.cd, [&](Scene& s, double v) { at(s).cd = v; }, "%.4g", "Drag coefficient, 0.47 for a smooth sphere.");
-    if (d.model == DragModel::linear) {
-        bool stokes = !d.linear_b.has_value();
-        if (ImGui::Checkbox("Stokes b = 6 pi mu R", &stokes))
-            ed.apply([&](Scene& s) {
-                if (stokes) at(s).linear_b.reset();
-                else at(s).linear_b = 0.01;
-            });
-        if (d.linear_b)
-            ed.number("b (N s/m)", *d.linear_b, [&](Scene& s, double v) { at(s).linear_b = v; }, "%.4g",
-                      "Linear drag coefficient: F = -b v_rel.");
+// An optional number: a checkbox sets it (starting at its lower bound) or makes it absent.
+template <class S>
+void edit_optional(SceneEditor& ed, const schema::Field<S>& f, const std::function<S&(Scene&)>& at,
+                   const std::string& label, const std::string& help) {
+    const auto p = std::get<std::optional<double> S::*>(f.member);
+    const std::optional<double> value = at(ed.current()).*p;
+    bool set = value.has_value();
+    if (ImGui::Checkbox(("set " + std::string(f.info.label)).c_str(), &set))
+        ed.apply([&](Scene& s) {
+            if (set) at(s).*p = f.info.bounds.lo;
+            else (at(s).*p).reset();
+        });
+    help_marker(help.c_str());
+    if (value) ed.number(label.c_str(), *value, [&](Scene& s, double v) { at(s).*p = v; }, "%.6g", help.c_str());
+}
+
+template <class S>
+void edit_field(SceneEditor& ed, const schema::Field<S>& f, const std::function<S&(Scene&)>& at) {
+    using K = schema::FieldKind;
+    // Each case copies only its member: the edit may replace the scene (and a copy of a whole
+    // Scene would copy every listed particle, every frame).
+    const S& current = at(ed.current());
+    const std::string label = field_label(f.info), help = field_help(f.info);
+    const auto& m = f.member;
+    switch (f.info.kind) {
+        case K::number: {
+            const auto p = std::get<double S::*>(m);
+            const double value = current.*p;
+            ed.number(label.c_str(), value, [&](Scene& s, double v) { at(s).*p = v; }, "%.6g", help.c_str());
+            break;
+        }
+        case K::vec3:
+        case K::bounded_vec3:
+        case K::direction: {
+            const auto p = std::get<Vec3 S::*>(m);
+            const Vec3 value = current.*p;
+            ed.vec3(label.c_str(), value, [&](Scene& s, const Vec3& v) { at(s).*p = v; }, "%.4g", help.c_str());
+            break;
+        }
+        case K::unsigned_integer: {
+            const auto p = std::get<std::uint64_t S::*>(m);
+            const std::uint64_t value = current.*p;
+            ed.integer(label.c_str(), value, [&](Scene& s, std::uint64_t v) { at(s).*p = v; }, help.c_str());
+            break;
+        }
+        case K::boolean: {
+            const auto p = std::get<bool S::*>(m);
+            bool on = current.*p;
+            if (ImGui::Checkbox(label.c_str(), &on)) ed.apply([&](Scene& s) { at(s).*p = on; });
+            help_marker(help.c_str());
+            break;
+        }
+        case K::string: {
+            const auto p = std::get<std::string S::*>(m);
+            const std::string value = current.*p;
+            ed.text(label.c_str(), value, [&](Scene& s, const std::string& v) { at(s).*p = v; });
+            break;
+        }
+        case K::enumeration: {
+            const auto& e = std::get<schema::EnumAccess<S>>(m);
+            const int value = e.get(current);
+            enum_combo(ed, label.c_str(), value, f.info.names, [&](Scene& s, int v) { e.set(at(s), v); });
+            help_marker(help.c_str());
+            break;
+        }
+        case K::optional_number: edit_optional(ed, f, at, label, help); break;
+        case K::format_tag:
+        case K::version_tag: break;  // constants, not edited
     }
+}
+
+template <class S>
+void edit_fields(SceneEditor& ed, const std::function<S&(Scene&)>& at) {
+    const auto rows = schema::SectionSchema<S>::rows;
+    // A field whose row names the values of the section's enumeration (its first row) it applies to
+    // is shown only for those, e.g. wind.period only for gusts.
+    int selected = -1;
+    if (!rows.empty() && rows.front().info.kind == schema::FieldKind::enumeration)
+        selected = std::get<schema::EnumAccess<S>>(rows.front().member).get(at(ed.current()));
+    for (const schema::Field<S>& f : rows)
+        if (selected < 0 || (f.info.shown_for >> selected & 1u)) edit_field(ed, f, at);
+}
+
+#define PL_EDIT_FIELDS(S)                                                                                   \
+    template void edit_fields<S>(SceneEditor&, const std::function<S&(Scene&)>&);                          \
+    template void edit_field<S>(SceneEditor&, const schema::Field<S>&, const std::function<S&(Scene&)>&);
+PL_EDIT_FIELDS(Scene)
+PL_EDIT_FIELDS(Room)
+PL_EDIT_FIELDS(World)
+PL_EDIT_FIELDS(ParticleSpec)
+PL_EDIT_FIELDS(Emitter)
+PL_EDIT_FIELDS(Variant)
+PL_EDIT_FIELDS(IntegratorSettings)
+#undef PL_EDIT_FIELDS
+
+void edit_drag_section(SceneEditor& ed, const std::function<DragSettings&(Scene&)>& at) {
+    edit_fields(ed, at);
+    const DragModel model = at(ed.current()).model;
+    const ReRange valid = drag_validity(model);
+    if (model != DragModel::none) ImGui::TextDisabled("valid for %.3g < Re < %.3g", valid.lo, valid.hi);
 }
 
 void edit_wind_section(SceneEditor& ed, const std::function<WindSettings&(Scene&)>& at, bool drag_on) {
-    const WindSettings w = at(ed.current());
-    enum_combo<WindKind>(ed, "wind", w.kind, all_wind_kinds, [&](Scene& s, WindKind k) { at(s).kind = k; });
-    if (w.kind != WindKind::none && !drag_on)
+    if (at(ed.current()).kind != WindKind::none && !drag_on)
         ImGui::TextColored({1.0f, 0.8f, 0.3f, 1.0f}, "Drag is off: wind has no effect.");
-    switch (w.kind) {
-        case WindKind::none: break;
-        case WindKind::constant:
-            ed.vec3("velocity (m/s)", w.velocity, [&](Scene& s, const Vec3& v) { at(s).velocity = v; });
-            break;
-        case WindKind::gust:
-            ed.vec3("mean (m/s)", w.velocity, [&](Scene& s, const Vec3& v) { at(s).velocity = v; });
-            ed.vec3("amplitude (m/s)", w.gust_amplitude, [&](Scene& s, const Vec3& v) { at(s).gust_amplitude = v; });
-            ed.number("period (s)", w.gust_period_s, [&](Scene& s, double v) { at(s).gust_period_s = v; });
-            ed.integer("seed", w.gust_seed, std::uint64_t{1} << 53, "world.wind.seed",
-                       [&](Scene& s, std::uint64_t v) { at(s).gust_seed = v; }, "Same seed, same gusts.");
-            break;
-        case WindKind::shear:
-            ed.vec3("at ref. height (m/s)", w.velocity, [&](Scene& s, const Vec3& v) { at(s).velocity = v; });
-            ed.number("ref. height (m)", w.reference_height_m, [&](Scene& s, double v) { at(s).reference_height_m = v; });
-            ed.number("exponent", w.shear_exponent, [&](Scene& s, double v) { at(s).shear_exponent = v; }, "%.4g",
-                      "Power-law boundary layer |w| ~ (height / ref. height)^exponent; 1/7 for open terrain.");
-            break;
-        case WindKind::vortex:
-            ed.vec3("centre (m)", w.vortex_center, [&](Scene& s, const Vec3& v) { at(s).vortex_center = v; });
-            ed.vec3("axis", w.vortex_axis, [&](Scene& s, const Vec3& v) { at(s).vortex_axis = v; });
-            ed.number("max speed (m/s)", w.vortex_max_speed, [&](Scene& s, double v) { at(s).vortex_max_speed = v; });
-            ed.number("core radius (m)", w.vortex_core_radius_m, [&](Scene& s, double v) { at(s).vortex_core_radius_m = v; },
-                      "%.4g", "Rankine vortex: the swirl rises linearly to max speed at the core radius, then falls as 1/r.");
-            break;
-    }
+    edit_fields(ed, at);
 }
 
-void edit_air_section(SceneEditor& ed, const std::function<Air&(Scene&)>& at) {
-    const Air a = at(ed.current());
-    ed.number("density (kg/m³)", a.density_kg_m3, [&](Scene& s, double v) { at(s).density_kg_m3 = v; }, "%.5g",
-              "1.225 at sea level (ISA, 15 C); about 0.74 at 5000 m.");
-    ed.number("viscosity (Pa s)", a.viscosity_pa_s, [&](Scene& s, double v) { at(s).viscosity_pa_s = v; }, "%.4g",
-              "Dynamic viscosity, 1.81e-5 for air at 15 C.");
-}
+void edit_air_section(SceneEditor& ed, const std::function<Air&(Scene&)>& at) { edit_fields(ed, at); }
 
-void edit_contact_section(SceneEditor& ed, const std::function<ContactSettings&(Scene&)>& at) {
-    const ContactSettings c = at(ed.current());
-    ed.number("restitution e", c.restitution, [&](Scene& s, double v) { at(s).restitution = v; }, "%.4g",
-              "Normal rebound speed / impact speed, 0 (sticks) .. 1 (no loss).");
-    ed.number("friction mu", c.friction, [&](Scene& s, double v) { at(s).friction = v; }, "%.4g",
-              "Coulomb friction coefficient on the walls, >= 0.");
-    ed.number("rest speed (m/s)", c.rest_speed, [&](Scene& s, double v) { at(s).rest_speed = v; }, "%.4g",
-              "A rebound slower than this ends in rest on the wall.");
-}
+void edit_contact_section(SceneEditor& ed, const std::function<ContactSettings&(Scene&)>& at) { edit_fields(ed, at); }
 
 void edit_integrator_section(SceneEditor& ed, const std::function<IntegratorSettings&(Scene&)>& at) {
-    const IntegratorSettings g = at(ed.current());
-    enum_combo<Method>(ed, "method", g.method, all_methods, [&](Scene& s, Method m) { at(s).method = m; });
-    const double limit = method_stability_limit(g.method);
-    if (std::isfinite(limit)) ImGui::TextDisabled("order %d, stable for dt k < %.3g", method_order(g.method), limit);
-    else ImGui::TextDisabled("order %d, stable for any dt k", method_order(g.method));
-    ed.number("dt (s)", g.dt, [&](Scene& s, double v) { at(s).dt = v; }, "%.6g", "The fixed step every run advances by.");
-    if (g.method == Method::dopri5) {
-        bool adaptive = g.adaptive;
-        if (ImGui::Checkbox("adaptive (error control)", &adaptive)) ed.apply([&](Scene& s) { at(s).adaptive = adaptive; });
-        if (g.adaptive) {
-            ed.number("rtol", g.rtol, [&](Scene& s, double v) { at(s).rtol = v; }, "%.3g");
-            ed.number("atol (m, m/s)", g.atol, [&](Scene& s, double v) { at(s).atol = v; }, "%.3g");
-        }
-    }
+    edit_fields(ed, at);
+    const Method method = at(ed.current()).method;
+    const double limit = method_stability_limit(method);
+    if (std::isfinite(limit)) ImGui::TextDisabled("order %d, stable for dt k < %.3g", method_order(method), limit);
+    else ImGui::TextDisabled("order %d, stable for any dt k", method_order(method));
 }
 
 }  // namespace pl::ui

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ui/lab_session.hpp"
+#include "physics/model/field_schema.hpp"
 #include "ui/panel_state.hpp"
 
 #include <functional>
@@ -22,9 +23,9 @@ public:
                 const char* format = "%.6g", const char* help = nullptr);
     void vec3(const char* label, const Vec3& value, const std::function<void(Scene&, const Vec3&)>& set,
               const char* format = "%.4g", const char* help = nullptr);
-    // A whole number in [0, max]; `path` names the preset field in the refusal message.
-    void integer(const char* label, std::uint64_t value, std::uint64_t max, const char* path,
-                 const std::function<void(Scene&, std::uint64_t)>& set, const char* help = nullptr);
+    // A whole number >= 0; its upper bound is the preset row's, checked with the other rules.
+    void integer(const char* label, std::uint64_t value, const std::function<void(Scene&, std::uint64_t)>& set,
+                 const char* help = nullptr);
     // A text field, applied when the user leaves it.
     void text(const char* label, const std::string& value, const std::function<void(Scene&, const std::string&)>& set);
     // Any other change (combo, checkbox, button); a refusal opens the error dialog.
@@ -36,6 +37,16 @@ private:
     LabSession& s_;
     PanelState& panels_;
 };
+
+// The fields of a section, from its preset rows (physics/model/schema/): label, unit, tooltip
+// (help and bounds) and, where the section has an enumeration, only the fields it applies to.
+// `at` finds the section inside a scene. Instantiated for Scene (name, description), Room, World
+// (gravity), ParticleSpec, Emitter, Variant (label), IntegratorSettings and the sections below.
+template <class S>
+void edit_fields(SceneEditor& ed, const std::function<S&(Scene&)>& at);
+// One row of a section.
+template <class S>
+void edit_field(SceneEditor& ed, const schema::Field<S>& field, const std::function<S&(Scene&)>& at);
 
 // The section editors, shared by the scene and by a variant's overrides: `at` finds the section
 // inside a scene (the base scene's, or a variant's override).

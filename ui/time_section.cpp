@@ -1,3 +1,4 @@
+#include "physics/model/schema/integrator_fields.hpp"
 #include "ui/frame_recorder.hpp"
 #include "ui/launch_angles.hpp"
 #include "ui/panel_state.hpp"
@@ -49,8 +50,9 @@ void draw_time_section(LabSession& s) {
     if (ImGui::SmallButton("1x")) s.time_scale = 1.0;
 
     SceneEditor ed(s);
-    ed.number("dt (s)", s.scene.integrator.dt, [](Scene& sc, double v) { sc.integrator.dt = v; }, "%.6g",
-              "The scene's fixed step (variants may override it). Changing it restarts the run.");
+    // The scene's fixed step (variants may override it); changing it restarts the run.
+    edit_field<IntegratorSettings>(ed, schema::integrator_rows[schema::row_index<IntegratorSettings>("dt")],
+                                   [](Scene& sc) -> IntegratorSettings& { return sc.integrator; });
 }
 
 void draw_launch_section(LabSession& s) {

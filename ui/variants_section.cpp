@@ -93,8 +93,7 @@ void draw_variants_section(LabSession& s) {
 
     ImGui::Separator();
     ImGui::PushID("variant_edit");
-    ed.text("label", s.scene.variants[sel].label,
-            [sel](Scene& sc, const std::string& l) { sc.variants[sel].label = l; });
+    edit_fields<Variant>(ed, [sel](Scene& sc) -> Variant& { return sc.variants[sel]; });
     override_section<DragSettings>(ed, sel, "drag", &Variant::drag, [](const Scene& sc) { return sc.drag; },
                                    [](SceneEditor& e, std::size_t v) {
                                        edit_drag_section(e, [v](Scene& sc) -> DragSettings& { return *sc.variants[v].drag; });

@@ -19,6 +19,7 @@ enum ExitCode : int { exit_ok = 0, exit_runtime_failure = 1, exit_bad_input = 2 
 // Each command adds itself to the app; its callback stores its exit code in `exit_code`.
 void add_run_command(CLI::App& app, int& exit_code);
 void add_validate_command(CLI::App& app, int& exit_code);
+void add_schema_command(CLI::App& app, int& exit_code);
 void add_compare_command(CLI::App& app, int& exit_code);
 void add_accuracy_command(CLI::App& app, int& exit_code);
 void add_stability_command(CLI::App& app, int& exit_code);

@@ -13,7 +13,7 @@ namespace pl::cli {
 
 namespace {
 
-constexpr const char* commands[] = {"run", "validate", "compare", "accuracy", "stability", "advise", "bench"};
+constexpr const char* commands[] = {"run", "validate", "schema", "compare", "accuracy", "stability", "advise", "bench"};
 
 constexpr const char* description =
     "particle-lab: a lab for Newtonian particle experiments (gravity, air drag, wind, bouncing in a room).\n"
@@ -39,6 +39,7 @@ int run_command(int argc, char** argv) {
     int exit_code = exit_ok;
     add_run_command(app, exit_code);
     add_validate_command(app, exit_code);
+    add_schema_command(app, exit_code);
     add_compare_command(app, exit_code);
     add_accuracy_command(app, exit_code);
     add_stability_command(app, exit_code);

@@ -1,5 +1,8 @@
-// particle-lab validate: load a preset and report every problem, or a one-line summary.
+// particle-lab validate: load a preset and report every problem, or a one-line summary;
+// `--format` prints the format reference generated from the preset rows instead.
 #include "cli/cli_support.hpp"
+
+#include "io/preset_reference.hpp"
 
 #include <memory>
 
@@ -7,8 +10,21 @@ namespace pl::cli {
 
 namespace {
 
-int validate(const std::string& path) {
-    const std::optional<Scene> scene = load_scene("validate", path);
+struct ValidateOptions {
+    std::string path;
+    bool format = false;
+};
+
+int validate(const ValidateOptions& o) {
+    if (o.format) {
+        std::fputs(preset_format_reference().c_str(), stdout);
+        return exit_ok;
+    }
+    if (o.path.empty()) {
+        std::fprintf(stderr, "particle-lab validate: PRESET is required (or --format)\n");
+        return exit_bad_input;
+    }
+    const std::optional<Scene> scene = load_scene("validate", o.path);
     if (!scene) return exit_bad_input;
     const std::size_t particles = scene->particles.size() + (scene->emitter ? scene->emitter->count : 0);
     const std::size_t variants = scene->variants.size();
@@ -20,13 +36,14 @@ int validate(const std::string& path) {
 }  // namespace
 
 void add_validate_command(CLI::App& app, int& exit_code) {
-    auto path = std::make_shared<std::string>();
+    auto o = std::make_shared<ValidateOptions>();
     CLI::App* cmd = app.add_subcommand("validate", "check a preset: exit 0, or 2 printing every error");
     cmd->footer(
         "Check a preset: exit 0 printing 'ok: N particles, M variants', or exit 2 printing every\n"
-        "error with its JSON path and the rule broken.");
-    cmd->add_option("PRESET", *path, "preset JSON file")->required();
-    cmd->callback([path, &exit_code] { exit_code = validate(*path); });
+        "error with its JSON path and the rule broken. --format prints the preset format reference.");
+    cmd->add_option("PRESET", o->path, "preset JSON file");
+    cmd->add_flag("--format", o->format, "print the preset format reference (every key, unit, bound, default)");
+    cmd->callback([o, &exit_code] { exit_code = validate(*o); });
 }
 
 }  // namespace pl::cli

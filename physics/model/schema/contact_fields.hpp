@@ -1,0 +1,24 @@
+// Rows of the preset's "contact" section (see physics/model/field_schema.hpp).
+#pragma once
+
+#include "physics/model/field_schema.hpp"
+#include "physics/model/schema/limits.hpp"
+
+namespace pl::schema {
+
+inline constexpr Field<ContactSettings> contact_rows[] = {
+    number("restitution", &ContactSettings::restitution, "", closed(0.0, 1.0), "restitution e",
+           "Normal rebound speed / impact speed, 0 (sticks) .. 1 (no loss)."),
+    number("friction", &ContactSettings::friction, "", non_negative(max_friction), "friction mu",
+           "Coulomb friction coefficient on the walls."),
+    number("rest_speed", &ContactSettings::rest_speed, "m/s", non_negative(max_rest_speed_mps), "rest speed",
+           "A rebound slower than this ends in rest on the wall."),
+};
+
+template <>
+struct SectionSchema<ContactSettings> : NoChildren {
+    static constexpr const char* name = "contact";
+    static constexpr std::span<const Field<ContactSettings>> rows = contact_rows;
+};
+
+}  // namespace pl::schema

@@ -1,0 +1,25 @@
+// Rows of one entry of the preset's "particles" list (see physics/model/field_schema.hpp).
+#pragma once
+
+#include "physics/model/field_schema.hpp"
+#include "physics/model/schema/limits.hpp"
+
+namespace pl::schema {
+
+inline constexpr Field<ParticleSpec> particle_rows[] = {
+    vec3("position", &ParticleSpec::position, "m", any_finite(), "position",
+         "Centre of the sphere; it must lie a radius away from every wall.")
+        .required(),
+    bounded_vec3("velocity", &ParticleSpec::velocity, "m/s", max_speed_mps, "velocity", "Initial velocity."),
+    number("mass", &ParticleSpec::mass, "kg", positive(max_mass_kg), "mass", "0.057 kg: a tennis ball."),
+    number("radius", &ParticleSpec::radius, "m", positive(max_room_size_m), "radius",
+           "Less than half the room's smallest size."),
+};
+
+template <>
+struct SectionSchema<ParticleSpec> : NoChildren {
+    static constexpr const char* name = "particle";
+    static constexpr std::span<const Field<ParticleSpec>> rows = particle_rows;
+};
+
+}  // namespace pl::schema
