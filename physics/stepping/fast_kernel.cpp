@@ -42,17 +42,15 @@ public:
     using F = Forces<Drag, HasWind>;
 
     // outs: one per step of the call, in step order.
-    RangeStepper(Simulation& sim, RangeOutput* outs, std::uint32_t steps)
-        : sim_(sim), s_(sim.mutable_state()), m_(sim.model()), room_(m_.room), outs_(outs), out_(outs),
-          steps_(steps), first_step_(sim.step_count()),
-          adaptive_on_(m_.integrator.method == Method::dopri5 && m_.integrator.adaptive),
-          identical_(sim.identical_particles()),
-          from_memory_(sim.particle_count() > cache_resident_particles),
+    RangeStepper(const KernelContext& k, RangeOutput* outs, std::uint32_t steps)
+        : k_(k), s_(k.state), m_(k.model), room_(m_.room), outs_(outs), out_(outs), steps_(steps),
+          first_step_(k.step), adaptive_on_(m_.integrator.method == Method::dopri5 && m_.integrator.adaptive),
+          identical_(k.identical_particles), from_memory_(k.state.size() > cache_resident_particles),
           ctx_{&room_, &m_.contact, m_.integrator.method, m_.integrator.rtol, m_.integrator.atol, outs->events,
                adaptive_on_ ? &adaptive_ : nullptr, &contact_solves_},
-          stepper_(ctx_, f_), t0_(sim.time()), h_(m_.integrator.dt) {
+          stepper_(ctx_, f_), t0_(k.time()), h_(m_.integrator.dt) {
         f_.gravity = m_.world.gravity;
-        f_.wind = &sim.wind();
+        f_.wind = &k.wind;
         if constexpr (M != Flight::none) {
             // Force evaluations of one fixed step and of one call (a step may look the wind up).
             F step = f_, call = f_;
@@ -378,7 +376,7 @@ private:
         const auto id = static_cast<std::uint32_t>(i);
         const std::size_t q = identical_ ? 0 : i;
         f_.drag = {s_.drag_k[q], s_.drag_re_scale[q]};
-        std::vector<double>* hints = adaptive_on_ ? &sim_.adaptive_step_hint() : nullptr;
+        std::vector<double>* hints = adaptive_on_ ? &k_.adaptive_hint : nullptr;
         ParticleStep p = load_step(s_, i, hints, s_.radius[q]);
         stepper_.advance(p, id, t0_, h_);
         if (!is_finite(p.y)) {
@@ -390,7 +388,7 @@ private:
         store_step<Drag, HasWind>(s_, i, p, hints, s_.mass[q]);
     }
 
-    Simulation& sim_;
+    const KernelContext& k_;
     ParticleState& s_;
     const Model& m_;
     const RoomBounds room_;
@@ -422,32 +420,25 @@ private:
     const double h_;
 };
 
-// Adds a range's counters and warnings to the simulation (events are already in place).
-void merge(Simulation& sim, const RangeOutput& out) {
-    ForceCounters& c = sim.mutable_counters();
-    c.gravity += out.counters.gravity;
-    c.drag += out.counters.drag;
-    c.wind += out.counters.wind;
-    c.accepted_steps += out.counters.accepted_steps;
-    c.rejected_steps += out.counters.rejected_steps;
-    c.contacts += out.counters.contacts;
-    c.fast_path += out.counters.fast_path;
-    for (const std::uint32_t i : out.frozen) sim.raise(WarningKind::frozen, i);
+// Adds a range's counters and warnings to the kernel's (events are already in place).
+void merge(const KernelContext& k, const RangeOutput& out) {
+    k.counters += out.counters;
+    for (const std::uint32_t i : out.frozen) k.warnings.raise(WarningKind::frozen, i, k.time());
 }
 
 template <Flight M, DragModel Drag, bool HasWind>
-void fast_step_kernel(Simulation& sim, std::uint32_t steps) {
-    const std::size_t n = sim.particle_count();
-    const std::size_t ranges = particle_ranges(n, sim.threads());
+void fast_step_kernel(const KernelContext& k, std::uint32_t steps) {
+    const std::size_t n = k.state.size();
+    const std::size_t ranges = particle_ranges(n, k.threads);
     if (ranges <= 1 && steps == 1) {
         RangeOutput out;
-        out.events = &sim.event_sink();
-        RangeStepper<M, Drag, HasWind>(sim, &out, 1).run(0, n);
-        merge(sim, out);
-        sim.finish_step();
+        out.events = k.events.events;
+        RangeStepper<M, Drag, HasWind>(k, &out, 1).run(0, n);
+        merge(k, out);
+        k.end_step();
         return;
     }
-    // One output per range and step (range k's steps at k * steps). Kept from call to call (one
+    // One output per range and step (range r's steps at r * steps). Kept from call to call (one
     // set per calling thread), so that the event vectors keep their room instead of being
     // allocated, grown and freed every call. The tasks reach it through `outs`: named inside a
     // task, `kept` would be the worker's own, empty copy.
@@ -460,21 +451,21 @@ void fast_step_kernel(Simulation& sim, std::uint32_t steps) {
         out.frozen.clear();
         out.counters = {};
     }
-    auto task = [&](std::size_t k) {
-        RangeStepper<M, Drag, HasWind>(sim, &outs[k * steps], steps)
-            .run(range_begin(n, ranges, k), range_begin(n, ranges, k + 1));
+    auto task = [&](std::size_t r) {
+        RangeStepper<M, Drag, HasWind>(k, &outs[r * steps], steps)
+            .run(range_begin(n, ranges, r), range_begin(n, ranges, r + 1));
     };
     if (ranges == 1) task(0);
-    else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(sim.threads())), task);
+    else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(k.threads)), task);
     // Step by step, range by range: the order one step at a time gives.
-    std::vector<Event>& sink = sim.event_sink();
+    std::vector<Event>& sink = *k.events.events;
     for (std::uint32_t step = 0; step < steps; ++step) {
-        for (std::size_t k = 0; k < ranges; ++k) {
-            const RangeOutput& out = outs[k * steps + step];
+        for (std::size_t r = 0; r < ranges; ++r) {
+            const RangeOutput& out = outs[r * steps + step];
             sink.insert(sink.end(), out.own_events.begin(), out.own_events.end());
-            merge(sim, out);
+            merge(k, out);
         }
-        sim.finish_step();
+        k.end_step();
     }
 }
 

@@ -16,7 +16,7 @@
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/events.hpp"
 #include "physics/stepping/integrators.hpp"
-#include "physics/stepping/simulation.hpp"
+#include "physics/stepping/kernel.hpp"
 
 #include <cmath>
 #include <vector>

@@ -153,6 +153,7 @@ void Simulation::monitor() {
     if (ranges == 1) task(0);
     else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(threads_)), task);
 
+    const WarningSink sink{&warnings_, &warned_};
     for (const MonitorScan& out : scans_) {
         max_stiffness_ = std::max(max_stiffness_, out.max_stiffness);
         reynolds_.lo = std::min(reynolds_.lo, out.reynolds.lo);
@@ -160,10 +161,10 @@ void Simulation::monitor() {
         for (const std::uint32_t i : out.suspects) {
             const double u = glm::length(air_velocity(i));
             const double re = state_.drag_re_scale[i] * u;
-            if (u > 0.0 && (re < valid.lo || re > valid.hi)) raise(WarningKind::drag_validity, i, re);
-            if (u > mach_warning_speed) raise(WarningKind::mach, i, u);
+            if (u > 0.0 && (re < valid.lo || re > valid.hi)) sink.raise(WarningKind::drag_validity, i, time(), re);
+            if (u > mach_warning_speed) sink.raise(WarningKind::mach, i, time(), u);
             const double k = drag_stiffness(model_.drag.model, {state_.drag_k[i], state_.drag_re_scale[i]}, u);
-            if (k * dt() > limit) raise(WarningKind::stability, i, k);
+            if (k * dt() > limit) sink.raise(WarningKind::stability, i, time(), k);
         }
     }
 }
