@@ -1,16 +1,20 @@
 #include "physics/stepping/simulation.hpp"
 
 #include "physics/model/drag.hpp"
+#include "physics/model/model_check.hpp"
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/energy.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 namespace pl {
 
 Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
-    : model_(std::move(model)), wind_(model_.world.wind, model_.room) {
+    : model_((check_model(model, particles), std::move(model))), wind_(model_.world.wind, model_.room) {
     state_.resize(particles.size());
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const ParticleSpec& p = particles[i];
@@ -54,9 +58,17 @@ void Simulation::step_n(std::uint64_t n) {
 }
 
 std::uint64_t Simulation::steps_to(double t) const {
-    std::uint64_t k = 0;
-    while (static_cast<double>(steps_ + k + 1) * dt() <= t * (1.0 + 1e-12)) ++k;
-    return k;
+    // The largest n with n dt <= t (1 + 1e-12), less the steps taken (n dt grows with n, so this
+    // is where one-at-a-time counting would stop): the floor of the quotient, corrected by one
+    // with the product the steps are timed by (the quotient may round across an integer).
+    if (std::isnan(t)) throw std::invalid_argument("steps_to: t must be a number, got NaN");
+    const double limit = t * (1.0 + 1e-12);
+    const double q = std::max(0.0, std::floor(limit / dt()));
+    if (!(q < 0x1p63)) throw std::invalid_argument(fmt::format("steps_to: t = {} is beyond 2^63 steps", t));
+    auto n = static_cast<std::uint64_t>(q);
+    if (static_cast<double>(n + 1) * dt() <= limit) ++n;
+    else if (n > 0 && static_cast<double>(n) * dt() > limit) --n;
+    return n > steps_ ? n - steps_ : 0;
 }
 
 KernelContext Simulation::context() {
