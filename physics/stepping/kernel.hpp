@@ -5,6 +5,7 @@
 #pragma once
 
 #include "physics/model/scene.hpp"
+#include "physics/model/terms/counters.hpp"
 #include "physics/model/wind.hpp"
 #include "physics/stepping/events.hpp"
 #include "physics/stepping/particle_state.hpp"
@@ -14,26 +15,6 @@
 #include <vector>
 
 namespace pl {
-
-// How often each force term was evaluated (one count per particle per evaluation).
-struct ForceCounters {
-    std::uint64_t gravity = 0, drag = 0, wind = 0;
-    std::uint64_t rejected_steps = 0;  // dopri5 only
-    std::uint64_t accepted_steps = 0;  // dopri5 internal steps
-    std::uint64_t contacts = 0;        // time-of-impact solves
-    std::uint64_t fast_path = 0;       // particle-steps the vectorised fast path finished
-
-    ForceCounters& operator+=(const ForceCounters& o) {
-        gravity += o.gravity;
-        drag += o.drag;
-        wind += o.wind;
-        rejected_steps += o.rejected_steps;
-        accepted_steps += o.accepted_steps;
-        contacts += o.contacts;
-        fast_path += o.fast_path;
-        return *this;
-    }
-};
 
 // Where a kernel's events go. At most max_pending undrained events are kept: end_step drops
 // the oldest (and counts them) when nobody drains, so memory stays bounded.

@@ -2,6 +2,7 @@
 
 #include "physics/model/drag.hpp"
 #include "physics/model/model_check.hpp"
+#include "physics/model/terms/term_list.hpp"
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/energy.hpp"
 
@@ -96,19 +97,16 @@ void Simulation::set_velocity(std::size_t i, const Vec3& v) {
 }
 
 Vec3 Simulation::acceleration(std::size_t i) const {
-    Vec3 a = model_.world.gravity;
-    if (model_.drag.model == DragModel::none) return a;
-    const Vec3 u = air_velocity(i);
-    const double speed = glm::length(u);
-    const DragCoefficients c{state_.drag_k[i], state_.drag_re_scale[i]};
-    double rate = 0.0;
-    switch (model_.drag.model) {
-        case DragModel::none: break;
-        case DragModel::linear: rate = c.k; break;
-        case DragModel::quadratic: rate = c.k * speed; break;
-        case DragModel::sphere_re: rate = c.k * sphere_cd_times_re(c.re_scale * speed); break;
-    }
-    return a - rate * u;
+    return terms::with_enabled_terms(model_, [&]<class F>() {
+        F f;
+        TermInputs in = scene_inputs(model_, &wind_);
+        in.k = state_.drag_k[i];
+        in.re_scale = state_.drag_re_scale[i];
+        in.mass = state_.mass[i];
+        in.radius = state_.radius[i];
+        f.load(in);
+        return f(state_.position(i), state_.velocity(i), time()).a;
+    });
 }
 
 Vec3 Simulation::air_velocity(std::size_t i) const { return state_.velocity(i) - wind_.at(state_.position(i), time()); }
