@@ -7,7 +7,7 @@
 namespace pl {
 
 struct ForceCounters {
-    std::uint64_t gravity = 0, drag = 0, wind = 0;  // one count per particle per evaluation
+    std::uint64_t gravity = 0, drag = 0, wind = 0, buoyancy = 0;  // one count per particle per evaluation
     std::uint64_t rejected_steps = 0;  // dopri5 only
     std::uint64_t accepted_steps = 0;  // dopri5 internal steps
     std::uint64_t contacts = 0;        // time-of-impact solves
@@ -17,6 +17,7 @@ struct ForceCounters {
         gravity += o.gravity;
         drag += o.drag;
         wind += o.wind;
+        buoyancy += o.buoyancy;
         rejected_steps += o.rejected_steps;
         accepted_steps += o.accepted_steps;
         contacts += o.contacts;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "physics/model/forces.hpp"
+#include "physics/model/terms/buoyancy.hpp"
 #include "physics/model/terms/drag_linear.hpp"
 #include "physics/model/terms/drag_quadratic.hpp"
 #include "physics/model/terms/drag_sphere_re.hpp"
@@ -22,7 +23,8 @@ struct Group {};
 
 // Gravity is always on and comes first; then the groups, in this order.
 using TermGroups = std::tuple<Group<DragLinear, DragQuadratic, DragSphereRe>,  //
-                              Group<Wind>>;
+                              Group<Wind>,                                     //
+                              Group<Buoyancy>>;
 
 namespace detail {
 
