@@ -28,8 +28,14 @@ const Broken broken[] = {
     {"integrator.dt", [](Model& m, ParticleSpec&) { m.integrator.dt = -1e-3; }},
     {"integrator.dt", [](Model& m, ParticleSpec&) { m.integrator.dt = nan; }},
     {"integrator.dt", [](Model& m, ParticleSpec&) { m.integrator.dt = inf; }},
-    {"integrator.rtol", [](Model& m, ParticleSpec&) { m.integrator.method = Method::dopri5; m.integrator.rtol = 0.0; }},
-    {"integrator.atol", [](Model& m, ParticleSpec&) { m.integrator.method = Method::dopri5; m.integrator.atol = -1.0; }},
+    {"integrator.rtol", [](Model& m, ParticleSpec&) {
+         m.integrator.method = Method::dopri5;
+         m.integrator.rtol = 0.0;
+     }},
+    {"integrator.atol", [](Model& m, ParticleSpec&) {
+         m.integrator.method = Method::dopri5;
+         m.integrator.atol = -1.0;
+     }},
     {"room.size[1]", [](Model& m, ParticleSpec&) { m.room.size.y = 0.0; }},
     {"room.size[0]", [](Model& m, ParticleSpec&) { m.room.size.x = -2.0; }},
     {"room.center", [](Model& m, ParticleSpec&) { m.room.center.z = nan; }},

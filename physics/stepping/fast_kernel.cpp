@@ -44,7 +44,8 @@ public:
     // outs: one per step of the call, in step order.
     RangeStepper(const KernelContext& k, RangeOutput* outs, std::uint32_t steps)
         : k_(k), s_(k.state), m_(k.model), room_(m_.room), outs_(outs), out_(outs), steps_(steps),
-          first_step_(k.step), rho_(m_.world.air.density_kg_m3), adaptive_on_(m_.integrator.method == Method::dopri5 && m_.integrator.adaptive),
+          first_step_(k.step), rho_(m_.world.air.density_kg_m3),
+          adaptive_on_(m_.integrator.method == Method::dopri5 && m_.integrator.adaptive),
           identical_(k.identical_particles), from_memory_(k.state.size() > cache_resident_particles),
           ctx_{&room_, &m_.contact, m_.integrator.method, m_.integrator.rtol, m_.integrator.atol, outs->events,
                adaptive_on_ ? &adaptive_ : nullptr, &contact_solves_},

@@ -7,18 +7,7 @@
 
 namespace pl::terms {
 
-struct DragLinear {
-    static constexpr TermRole role = TermRole::drag;
-    static constexpr Ledger ledger = Ledger::drag;
-    static constexpr std::uint64_t ForceCounters::*counter = &ForceCounters::drag;
-    static constexpr bool rest_is_uniform = true;  // no force at u = 0
-    static constexpr DragModel model = DragModel::linear;
-    static bool enabled(const Model& m) { return m.drag.model == model; }
-
-    DragCoefficients drag{};
-    mutable std::uint64_t evals = 0;
-
-    void load(const TermInputs& in) { drag = {in.k, in.re_scale}; }
+struct DragLinear : DragBase<DragModel::linear> {
     // a = -rate u
     double rate(const Vec3&) const { return drag.k; }
     // d|a|/du at relative speed u (1/s)

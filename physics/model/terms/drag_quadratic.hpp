@@ -9,18 +9,7 @@
 
 namespace pl::terms {
 
-struct DragQuadratic {
-    static constexpr TermRole role = TermRole::drag;
-    static constexpr Ledger ledger = Ledger::drag;
-    static constexpr std::uint64_t ForceCounters::*counter = &ForceCounters::drag;
-    static constexpr bool rest_is_uniform = true;  // no force at u = 0
-    static constexpr DragModel model = DragModel::quadratic;
-    static bool enabled(const Model& m) { return m.drag.model == model; }
-
-    DragCoefficients drag{};
-    mutable std::uint64_t evals = 0;
-
-    void load(const TermInputs& in) { drag = {in.k, in.re_scale}; }
+struct DragQuadratic : DragBase<DragModel::quadratic> {
     double rate(const Vec3& u) const { return drag.k * std::sqrt(glm::dot(u, u)); }
     static double stiffness(double k, double /*re_scale*/, double u) { return 2.0 * k * u; }
 };

@@ -11,20 +11,11 @@
 
 namespace pl::terms {
 
-struct DragSphereRe {
-    static constexpr TermRole role = TermRole::drag;
-    static constexpr Ledger ledger = Ledger::drag;
-    static constexpr std::uint64_t ForceCounters::*counter = &ForceCounters::drag;
+struct DragSphereRe : DragBase<DragModel::sphere_re> {
     // The rest test runs the slide once for all particles; the correlation's pow at Re = 0 is
     // not worth proving uniform, so particles at rest take the per-particle path.
     static constexpr bool rest_is_uniform = false;
-    static constexpr DragModel model = DragModel::sphere_re;
-    static bool enabled(const Model& m) { return m.drag.model == model; }
 
-    DragCoefficients drag{};
-    mutable std::uint64_t evals = 0;
-
-    void load(const TermInputs& in) { drag = {in.k, in.re_scale}; }
     double rate(const Vec3& u) const { return drag.k * sphere_cd_times_re(drag.re_scale * std::sqrt(glm::dot(u, u))); }
     // d/du of k CdRe(Re) u, estimated with a relative finite difference (at least k CdRe).
     static double stiffness(double k, double re_scale, double u) {

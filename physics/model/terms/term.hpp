@@ -19,6 +19,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <cstdint>
+
 namespace pl {
 
 class WindField;
@@ -46,6 +48,24 @@ inline TermInputs scene_inputs(const Model& m, const WindField* wind) {
     in.air_density = m.world.air.density_kg_m3;
     return in;
 }
+
+// What the drag terms share: role, ledger line, counter and the per-particle coefficients
+// (DragCoefficients, precomputed per particle by drag_coefficients). Each drag term adds its
+// rate(u) (a = -rate u) and its stiffness(k, re_scale, |u|).
+template <DragModel M>
+struct DragBase {
+    static constexpr TermRole role = TermRole::drag;
+    static constexpr Ledger ledger = Ledger::drag;
+    static constexpr std::uint64_t ForceCounters::*counter = &ForceCounters::drag;
+    static constexpr bool rest_is_uniform = true;  // no force at u = 0
+    static constexpr DragModel model = M;
+    static bool enabled(const Model& m) { return m.drag.model == M; }
+
+    DragCoefficients drag{};
+    mutable std::uint64_t evals = 0;
+
+    void load(const TermInputs& in) { drag = {in.k, in.re_scale}; }
+};
 
 // Power dissipated by a drag a = -rate u (W/kg): rate |u|^2 >= 0.
 inline double drag_power(double rate, const Vec3& u) { return rate * glm::dot(u, u); }
