@@ -2,7 +2,6 @@
 // the event cap and the monitor: NaN guard, drag validity and stability checks), the stepping
 // kernel alone (fast_kernel.hpp), and the step with the generic reference kernel, to show
 // where the time goes. Every timed step is followed by drain_events(), as the callers do.
-#include "physics/stepping/fast_kernel.hpp"
 #include "physics/stepping/simulation.hpp"
 #include "registry.hpp"
 #include "workloads.hpp"
@@ -25,7 +24,6 @@ enum class Timed {
 // steps: steps per timed call (Simulation::step_n), as a GUI frame or a CLI output interval
 // takes them; 1 is Simulation::step().
 void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads, Timed timed, int steps = 1) {
-    const StepKernel kernel = pick_fast_kernel(scene.model);
     const bool kernel_only = timed == Timed::kernel_only;
     auto fresh = [&] {
         Simulation sim(scene.model, scene.particles);
@@ -46,7 +44,7 @@ void run_engine(benchmark::State& state, const WorkloadScene& scene, int threads
             taken = 0;
             state.ResumeTiming();
         }
-        if (kernel_only) kernel(sim, static_cast<std::uint32_t>(steps));
+        if (kernel_only) sim.run_kernel(static_cast<std::uint32_t>(steps));
         else sim.step_n(static_cast<std::uint64_t>(steps));
         // Consumers take the events after every frame or output sample; left to pile up for a
         // whole window they would be a growing vector, reallocated and page-faulted, not

@@ -1,5 +1,9 @@
 #include "physics/model/drag.hpp"
 
+#include "physics/model/terms/drag_linear.hpp"
+#include "physics/model/terms/drag_quadratic.hpp"
+#include "physics/model/terms/drag_sphere_re.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -51,16 +55,9 @@ ReRange drag_validity(DragModel model) {
 double drag_stiffness(DragModel model, const DragCoefficients& c, double u) {
     switch (model) {
         case DragModel::none: return 0.0;
-        case DragModel::linear: return c.k;
-        case DragModel::quadratic: return 2.0 * c.k * u;
-        case DragModel::sphere_re: {
-            // d/du of k CdRe(Re) u; estimated with a relative finite difference.
-            const double re = c.re_scale * u;
-            const double f0 = sphere_cd_times_re(re) * u;
-            const double du = 1e-6 * (u + 1e-9);
-            const double f1 = sphere_cd_times_re(c.re_scale * (u + du)) * (u + du);
-            return c.k * std::max((f1 - f0) / du, sphere_cd_times_re(re));
-        }
+        case DragModel::linear: return terms::DragLinear::stiffness(c.k, c.re_scale, u);
+        case DragModel::quadratic: return terms::DragQuadratic::stiffness(c.k, c.re_scale, u);
+        case DragModel::sphere_re: return terms::DragSphereRe::stiffness(c.k, c.re_scale, u);
     }
     return 0.0;
 }

@@ -1,16 +1,15 @@
-// The force sum, assembled at compile time from the model: a term that is off is not
-// compiled in, so it costs nothing and is never evaluated (the counters prove it).
+// The force sum, assembled at compile time from the list of terms a scene enables
+// (terms/term_list.hpp builds the list; terms/*.hpp hold the terms): a term that is off is not
+// in the list, so it costs nothing and is never evaluated (the counters prove it).
 // Everything is per unit mass: accelerations and powers in W/kg.
 #pragma once
 
-#include "physics/model/drag.hpp"
-#include "physics/model/scene.hpp"
-#include "physics/model/wind.hpp"
+#include "physics/model/terms/term.hpp"
 
 #include <glm/geometric.hpp>
 
-#include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 namespace pl {
 
@@ -18,68 +17,127 @@ namespace pl {
 struct Derivative {
     Vec3 a{0.0};
     double drag_power = 0.0;  // energy dissipated by drag (relative to the air), >= 0
-    double wind_power = 0.0;  // work done on the particle by the moving air
+    double wind_power = 0.0;  // work done on the particle by the air (wind through drag, body terms of the air)
 };
 
 // Linear-drag view of the forces at one state, for the exponential integrator:
-// a = g - k (v - w) with k and w frozen over the step.
+// a = body - k (v - w) with k, w and the constant body accelerations frozen over the step.
 struct LinearisedForces {
     double k = 0.0;
     Vec3 wind{0.0};
+    Vec3 body{0.0};   // gravity plus the other body terms
+    Vec3 extra{0.0};  // the body terms other than gravity (their work goes to the air_work line)
 };
 
-template <DragModel Drag, bool HasWind>
-struct Forces {
-    Vec3 gravity{0.0};
-    const WindField* wind = nullptr;
-    DragCoefficients drag{};  // of the particle being stepped
-    mutable std::uint64_t gravity_evals = 0, drag_evals = 0, wind_evals = 0;
+namespace detail {
+template <TermRole R, class... Terms>
+struct first_with_role {
+    using type = void;
+};
+template <TermRole R, class T, class... Rest>
+struct first_with_role<R, T, Rest...> {
+    using type = std::conditional_t<T::role == R, T, typename first_with_role<R, Rest...>::type>;
+};
+}  // namespace detail
+
+// Terms: the gravity term first, then at most one drag term, at most one air term, and body
+// terms (constant forces per particle), in terms/term_list.hpp's order.
+template <class... Terms>
+struct Forces : Terms... {
+    using DragTerm = typename detail::first_with_role<TermRole::drag, Terms...>::type;
+    using AirTerm = typename detail::first_with_role<TermRole::air, Terms...>::type;
+    static constexpr bool has_drag = !std::is_void_v<DragTerm>;
+    static constexpr bool has_wind = !std::is_void_v<AirTerm>;
+    static constexpr bool has_extra_body = ((Terms::role == TermRole::body) || ...);
+    // Which ledger lines the enabled terms write (a line nobody writes is left untouched).
+    static constexpr bool writes_drag = ((Terms::ledger == Ledger::drag) || ...);
+    static constexpr bool writes_air_work = ((Terms::ledger == Ledger::air_work) || ...);
+    // Whether the forces on a particle at rest are the same for every particle (see term.hpp).
+    static constexpr bool rest_is_uniform = (Terms::rest_is_uniform && ...);
+
+    void load(const TermInputs& in) { (Terms::load(in), ...); }
+
+    // The wind field the air term looks up (null without one, or with the wind known ahead).
+    const WindField* wind_field() const {
+        if constexpr (has_wind) {
+            if constexpr (requires(const AirTerm& a) { a.wind; }) return AirTerm::wind;
+        }
+        return nullptr;
+    }
 
     double drag_rate(const Vec3& u) const {
-        if constexpr (Drag == DragModel::linear) {
-            return drag.k;
-        } else if constexpr (Drag == DragModel::quadratic) {
-            return drag.k * std::sqrt(glm::dot(u, u));
-        } else if constexpr (Drag == DragModel::sphere_re) {
-            return drag.k * sphere_cd_times_re(drag.re_scale * std::sqrt(glm::dot(u, u)));
-        } else {
-            return 0.0;
-        }
+        if constexpr (has_drag) return DragTerm::rate(u);
+        else return 0.0;
     }
 
     Vec3 air_velocity(const Vec3& x, double t) const {
-        if constexpr (HasWind) {
-            ++wind_evals;
-            return wind->at(x, t);
-        } else {
-            return Vec3(0.0);
-        }
+        if constexpr (has_wind) return AirTerm::at(x, t);
+        else return Vec3(0.0);
     }
 
     Derivative operator()(const Vec3& x, const Vec3& v, double t) const {
-        ++gravity_evals;
-        Derivative d{gravity};
-        if constexpr (Drag != DragModel::none) {
-            ++drag_evals;
+        ++this->gravity_term().evals;
+        Derivative d{this->gravity};
+        if constexpr (has_drag) {
+            ++DragTerm::evals;
             const Vec3 w = air_velocity(x, t);
             const Vec3 u = v - w;
             const double c = drag_rate(u);
             const Vec3 a_drag = -c * u;
             d.a += a_drag;
-            d.drag_power = c * glm::dot(u, u);
-            if constexpr (HasWind) d.wind_power = glm::dot(a_drag, w);
+            d.drag_power = drag_power(c, u);
+            if constexpr (has_wind) d.wind_power = AirTerm::power(a_drag, w);
         }
+        (add_body<Terms>(d, v), ...);
         return d;
     }
 
     LinearisedForces linearise(const Vec3& x, const Vec3& v, double t) const {
+        ++this->gravity_term().evals;
         LinearisedForces l;
-        if constexpr (Drag != DragModel::none) {
-            ++drag_evals;
+        l.body = this->gravity;
+        if constexpr (has_drag) {
+            ++DragTerm::evals;
             l.wind = air_velocity(x, t);
             l.k = drag_rate(v - l.wind);
         }
+        (add_body<Terms>(l), ...);
         return l;
+    }
+
+    // The evaluations counted so far, each in its term's slot.
+    ForceCounters evaluations() const {
+        ForceCounters c;
+        ((c.*Terms::counter += Terms::evals), ...);
+        return c;
+    }
+    // Adds `times` the evaluations `per` counts (as if the lanes had evaluated through this functor).
+    void add_evaluations(const ForceCounters& per, std::uint64_t times) {
+        ((Terms::evals += times * (per.*Terms::counter)), ...);
+    }
+
+private:
+    using GravityTerm = typename detail::first_with_role<TermRole::gravity, Terms...>::type;
+    const GravityTerm& gravity_term() const { return *this; }
+
+    // Body terms other than gravity, after the drag: their acceleration and their work.
+    template <class T>
+    void add_body(Derivative& d, const Vec3& v) const {
+        if constexpr (T::role == TermRole::body) {
+            ++T::evals;
+            const Vec3 a = T::acceleration(this->gravity);
+            d.a += a;
+            d.wind_power += T::power(a, v);
+        }
+    }
+    template <class T>
+    void add_body(LinearisedForces& l) const {
+        if constexpr (T::role == TermRole::body) {
+            ++T::evals;
+            const Vec3 a = T::acceleration(this->gravity);
+            l.body += a;
+            l.extra += a;
+        }
     }
 };
 

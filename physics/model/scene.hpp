@@ -55,6 +55,7 @@ struct World {
     Vec3 gravity{0.0, -9.81, 0.0};
     Air air;
     WindSettings wind;
+    bool buoyancy = false;  // the displaced air's weight lifts each particle (terms/buoyancy.hpp)
 };
 
 enum class DragModel { none, linear, quadratic, sphere_re };

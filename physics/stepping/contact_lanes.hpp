@@ -36,13 +36,14 @@ void gather(Lanes& L, std::size_t j, const ParticleState& s, std::uint32_t i, st
     L.k[j] = s.drag_k[p];
     L.re_scale[j] = s.drag_re_scale[p];
     L.r[j] = s.radius[p];
+    L.m[j] = s.mass[p];
 }
 
 // Flagged free particles of one batch, and what bounce_lanes made of them.
 struct BounceLanes {
     static constexpr std::size_t capacity = contact_batch + fast_chunk;
     double x[capacity], y[capacity], z[capacity], vx[capacity], vy[capacity], vz[capacity];
-    double k[capacity], re_scale[capacity], r[capacity];
+    double k[capacity], re_scale[capacity], r[capacity], m[capacity];
     double drag_loss[capacity], wind_gain[capacity], bounce_loss[capacity], friction_loss[capacity];
     double t[capacity], speed_in[capacity], speed_out[capacity];
     std::int64_t wall[capacity], ok[capacity], notify[capacity], flights[capacity];
@@ -61,16 +62,18 @@ struct BounceLanes {
 // by value, so that the lanes' stores provably cannot alias them.
 template <Flight M, class F>
 [[gnu::flatten, gnu::noinline]] void bounce_lanes(BounceLanes& L, std::size_t n, const F& forces, const RoomBounds room,
-                                                  const ContactSettings contact, const double t0, const double h) {
+                                                  const ContactSettings contact, const double t0, const double h,
+                                                  const double air_density) {
     constexpr double kappa = position_kappa(method_of(M));
     const double gx = forces.gravity.x, gy = forces.gravity.y, gz = forces.gravity.z;
-    const WindField* const wind = forces.wind;
+    const WindField* const wind = forces.wind_field();
     const double lo_x = room.lo.x, lo_y = room.lo.y, lo_z = room.lo.z;
     const double hi_x = room.hi.x, hi_y = room.hi.y, hi_z = room.hi.z;
 #pragma GCC ivdep
     for (std::size_t j = 0; j < n; ++j) {
         F f;
-        set_forces(f, gx, gy, gz, wind, L.k[j], L.re_scale[j], 0.0, 0.0, 0.0);
+        f.load({.gx = gx, .gy = gy, .gz = gz, .wind = wind, .k = L.k[j], .re_scale = L.re_scale[j], .mass = L.m[j],
+                .radius = L.r[j], .air_density = air_density});
         const double r = L.r[j];
         FlightState y0;
         y0.x = Vec3(L.x[j], L.y[j], L.z[j]);
@@ -152,7 +155,7 @@ template <Flight M, class F>
 struct SlideLanes {
     static constexpr std::size_t capacity = contact_batch + fast_chunk;
     double x[capacity], y[capacity], z[capacity], vx[capacity], vy[capacity], vz[capacity];
-    double k[capacity], re_scale[capacity], r[capacity];
+    double k[capacity], re_scale[capacity], r[capacity], m[capacity];
     double drag_loss[capacity], wind_gain[capacity], friction_loss[capacity];
     std::int64_t wall_bit[capacity], ok[capacity];
 };
@@ -160,13 +163,15 @@ struct SlideLanes {
 // slide_lane for lanes [0, n); the arguments as for bounce_lanes.
 template <class F>
 [[gnu::flatten, gnu::noinline]] void slide_lanes(SlideLanes& L, std::size_t n, const F& forces, const RoomBounds room,
-                                                 const double friction, const double t0, const double h) {
+                                                 const double friction, const double t0, const double h,
+                                                 const double air_density) {
     const double gx = forces.gravity.x, gy = forces.gravity.y, gz = forces.gravity.z;
-    const WindField* const wind = forces.wind;
+    const WindField* const wind = forces.wind_field();
 #pragma GCC ivdep
     for (std::size_t j = 0; j < n; ++j) {
         F f;
-        set_forces(f, gx, gy, gz, wind, L.k[j], L.re_scale[j], 0.0, 0.0, 0.0);
+        f.load({.gx = gx, .gy = gy, .gz = gz, .wind = wind, .k = L.k[j], .re_scale = L.re_scale[j], .mass = L.m[j],
+                .radius = L.r[j], .air_density = air_density});
         const Slide q = slide_lane(f, room, friction, t0, h, L.r[j], L.wall_bit[j], L.x[j], L.y[j], L.z[j],
                                    L.vx[j], L.vy[j], L.vz[j]);
         L.ok[j] = q.ok;

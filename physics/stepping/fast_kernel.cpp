@@ -1,5 +1,6 @@
 #include "physics/stepping/fast_kernel.hpp"
 
+#include "physics/model/terms/term_list.hpp"
 #include "physics/stepping/contact_lanes.hpp"
 #include "physics/stepping/flight_chunk.hpp"
 #include "physics/stepping/held_lanes.hpp"
@@ -36,30 +37,27 @@ struct alignas(128) RangeOutput {
 // particle of the chunk for the pass; they break even near 60 of 256.
 constexpr std::size_t slide_in_place_from = 64;
 
-template <Flight M, DragModel Drag, bool HasWind>
+template <Flight M, class F>
 class RangeStepper {
 public:
-    using F = Forces<Drag, HasWind>;
 
     // outs: one per step of the call, in step order.
-    RangeStepper(Simulation& sim, RangeOutput* outs, std::uint32_t steps)
-        : sim_(sim), s_(sim.mutable_state()), m_(sim.model()), room_(m_.room), outs_(outs), out_(outs),
-          steps_(steps), first_step_(sim.step_count()),
+    RangeStepper(const KernelContext& k, RangeOutput* outs, std::uint32_t steps)
+        : k_(k), s_(k.state), m_(k.model), room_(m_.room), outs_(outs), out_(outs), steps_(steps),
+          first_step_(k.step), rho_(m_.world.air.density_kg_m3),
           adaptive_on_(m_.integrator.method == Method::dopri5 && m_.integrator.adaptive),
-          identical_(sim.identical_particles()),
-          from_memory_(sim.particle_count() > cache_resident_particles),
+          identical_(k.identical_particles), from_memory_(k.state.size() > cache_resident_particles),
           ctx_{&room_, &m_.contact, m_.integrator.method, m_.integrator.rtol, m_.integrator.atol, outs->events,
                adaptive_on_ ? &adaptive_ : nullptr, &contact_solves_},
-          stepper_(ctx_, f_), t0_(sim.time()), h_(m_.integrator.dt) {
-        f_.gravity = m_.world.gravity;
-        f_.wind = &sim.wind();
+          stepper_(ctx_, f_), t0_(k.time()), h_(m_.integrator.dt) {
+        f_.load(scene_inputs(m_, &k.wind));
         if constexpr (M != Flight::none) {
             // Force evaluations of one fixed step and of one call (a step may look the wind up).
             F step = f_, call = f_;
             fixed_step<M>(FlightState{}, t0_, h_, step);
             call(Vec3(0.0), Vec3(0.0), t0_);
-            per_step_ = {step.gravity_evals, step.drag_evals, step.wind_evals};
-            per_call_ = {call.gravity_evals, call.drag_evals, call.wind_evals};
+            per_step_ = step.evaluations();
+            per_call_ = call.evaluations();
         }
     }
 
@@ -74,13 +72,11 @@ public:
                 run_step(b, std::min(end, b + block));
             }
         }
+        // Phase 1 evaluated the forces of every particle it finished once per method stage.
+        f_.add_evaluations(per_step_, fast_);
         ForceCounters& c = outs_[0].counters;
         add_counts(c, f_, adaptive_, contact_solves_);
         c.fast_path += fast_;
-        // Phase 1 evaluated the forces of every particle it finished once per method stage.
-        c.gravity += fast_ * per_step_.gravity;
-        c.drag += fast_ * per_step_.drag;
-        c.wind += fast_ * per_step_.wind;
     }
 
 private:
@@ -153,7 +149,8 @@ private:
     [[gnu::flatten, gnu::noinline]] std::size_t slide_chunk(std::size_t c, std::size_t c_end, const LaneMask* held,
                                                             LaneBits* flagged) {
         const double gx = f_.gravity.x, gy = f_.gravity.y, gz = f_.gravity.z;
-        const WindField* const wind = f_.wind;
+        const WindField* const wind = f_.wind_field();
+        const double rho = rho_;
         const RoomBounds room = room_;
         const double friction = m_.contact.friction;
         const double t0 = t0_, h = h_;
@@ -176,13 +173,13 @@ private:
             const LaneMask code = held[i - c];
             // One resting wall (one bit of the low byte) and not frozen (nothing above it).
             const bool one_wall = (code != 0) & ((code & (code - 1)) == 0) & (code < 0x100);
-            F f;
-            set_forces(f, gx, gy, gz, wind, Identical ? k0 : drag_k[i], Identical ? re_scale0 : re_scale[i], 0.0,
-                       0.0, 0.0);
-            const Slide q = slide_lane(f, room, friction, t0, h, Identical ? radius0 : radius[i], code, px[i],
-                                       py[i], pz[i], vx[i], vy[i], vz[i]);
-            const bool take = one_wall & q.ok;
             const double m = Identical ? mass0 : mass[i];
+            const double r = Identical ? radius0 : radius[i];
+            F f;
+            f.load({.gx = gx, .gy = gy, .gz = gz, .wind = wind, .k = Identical ? k0 : drag_k[i],
+                    .re_scale = Identical ? re_scale0 : re_scale[i], .mass = m, .radius = r, .air_density = rho});
+            const Slide q = slide_lane(f, room, friction, t0, h, r, code, px[i], py[i], pz[i], vx[i], vy[i], vz[i]);
+            const bool take = one_wall & q.ok;
             px[i] = take ? q.x : px[i];
             py[i] = take ? q.y : py[i];
             pz[i] = take ? q.z : pz[i];
@@ -191,10 +188,8 @@ private:
             vz[i] = take ? q.vz : vz[i];
             // store_step's ledger increments (its bounce increment, mass * 0, changes nothing).
             friction_loss[i] = take ? friction_loss[i] + m * q.friction_loss : friction_loss[i];
-            if constexpr (Drag != DragModel::none) {
-                drag_loss[i] = take ? drag_loss[i] + m * q.drag_loss : drag_loss[i];
-                if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + m * q.wind_gain : wind_work[i];
-            }
+            if constexpr (F::writes_drag) drag_loss[i] = take ? drag_loss[i] + m * q.drag_loss : drag_loss[i];
+            if constexpr (F::writes_air_work) wind_work[i] = take ? wind_work[i] + m * q.wind_gain : wind_work[i];
             return take;
         };
         // The slid particles' flags cleared group by group (bit_of: see flight_chunk).
@@ -217,13 +212,13 @@ private:
     // and is found once, by running it. Where it is "still, ok, v = +0, x unchanged", the slide
     // changes no bit of the particle (its ledger increments are mass * +0) and is skipped.
     std::int64_t walls_that_hold_still() const {
-        if constexpr (HasWind || Drag == DragModel::sphere_re) {
+        if constexpr (!F::rest_is_uniform) {
             return 0;
         } else {
             if (s_.size() == 0) return 0;
             F f;
-            set_forces(f, f_.gravity.x, f_.gravity.y, f_.gravity.z, nullptr, s_.drag_k[0], s_.drag_re_scale[0], 0.0,
-                       0.0, 0.0);
+            f.load({.gx = f_.gravity.x, .gy = f_.gravity.y, .gz = f_.gravity.z, .k = s_.drag_k[0],
+                    .re_scale = s_.drag_re_scale[0]});
             const Vec3 x = 0.5 * (room_.lo + room_.hi);
             std::int64_t walls = 0;
             for (std::int64_t bit = 1; bit < 64; bit <<= 1) {
@@ -262,10 +257,10 @@ private:
     std::size_t flight(std::size_t c, std::size_t c_end, const HeldLanes& held, LaneBits* flags) {
         const LaneBits* const bits = held.bits();
         if (streaming_)
-            return identical_ ? flight_chunk<M, Drag, HasWind, true, true>(s_, c, c_end, f_, room_, t0_, h_, bits, flags)
-                              : flight_chunk<M, Drag, HasWind, false, true>(s_, c, c_end, f_, room_, t0_, h_, bits, flags);
-        return identical_ ? flight_chunk<M, Drag, HasWind, true, false>(s_, c, c_end, f_, room_, t0_, h_, bits, flags)
-                          : flight_chunk<M, Drag, HasWind, false, false>(s_, c, c_end, f_, room_, t0_, h_, bits, flags);
+            return identical_ ? flight_chunk<M, F, true, true>(s_, c, c_end, f_, room_, t0_, h_, rho_, bits, flags)
+                              : flight_chunk<M, F, false, true>(s_, c, c_end, f_, room_, t0_, h_, rho_, bits, flags);
+        return identical_ ? flight_chunk<M, F, true, false>(s_, c, c_end, f_, room_, t0_, h_, rho_, bits, flags)
+                          : flight_chunk<M, F, false, false>(s_, c, c_end, f_, room_, t0_, h_, rho_, bits, flags);
     }
 
     // Phase 2 for the pending particles, in order: for methods whose position is a polynomial in
@@ -293,8 +288,8 @@ private:
                     gather(sliding, m++, s_, i, p);
                 }
             }
-            bounce_lanes<M>(lanes, k, f_, room_, m_.contact, t0_, h_);
-            slide_lanes(sliding, m, f_, room_, m_.contact.friction, t0_, h_);
+            bounce_lanes<M>(lanes, k, f_, room_, m_.contact, t0_, h_, rho_);
+            slide_lanes(sliding, m, f_, room_, m_.contact.friction, t0_, h_, rho_);
             std::size_t j = 0, l = 0;
             for (std::size_t q = 0; q < n; ++q) {
                 const std::uint32_t i = pending_[q];
@@ -348,7 +343,7 @@ private:
     // particle is committed once per step, and the batch's additions are applied before its next.
     void commit(std::uint32_t i, const ParticleStep& p) {
         const double mass = s_.mass[identical_ ? 0 : i];
-        store_motion<Drag, HasWind>(s_, i, p, nullptr, mass);
+        store_motion<F>(s_, i, p, nullptr, mass);
         deferred_[deferred_count_++] = {i, mass * p.bounce_loss, mass * p.friction_loss};
     }
 
@@ -366,19 +361,20 @@ private:
 
     // Adds `times` evaluations of the kind `per` counts to the functor's counters, as if the
     // lanes had evaluated the forces through it.
-    void count_evals(const ForceCounters& per, std::uint64_t times) {
-        f_.gravity_evals += times * per.gravity;
-        f_.drag_evals += times * per.drag;
-        f_.wind_evals += times * per.wind;
-    }
+    void count_evals(const ForceCounters& per, std::uint64_t times) { f_.add_evaluations(per, times); }
 
     // The generic kernel's per-particle body (simulation.cpp, step_kernel), operation for operation.
     void step_generic(std::size_t i) {
         if (s_.frozen[i]) return;
         const auto id = static_cast<std::uint32_t>(i);
         const std::size_t q = identical_ ? 0 : i;
-        f_.drag = {s_.drag_k[q], s_.drag_re_scale[q]};
-        std::vector<double>* hints = adaptive_on_ ? &sim_.adaptive_step_hint() : nullptr;
+        TermInputs in = scene_inputs(m_, &k_.wind);
+        in.k = s_.drag_k[q];
+        in.re_scale = s_.drag_re_scale[q];
+        in.mass = s_.mass[q];
+        in.radius = s_.radius[q];
+        f_.load(in);
+        std::vector<double>* hints = adaptive_on_ ? &k_.adaptive_hint : nullptr;
         ParticleStep p = load_step(s_, i, hints, s_.radius[q]);
         stepper_.advance(p, id, t0_, h_);
         if (!is_finite(p.y)) {
@@ -387,10 +383,10 @@ private:
             out_->frozen.push_back(id);
             return;
         }
-        store_step<Drag, HasWind>(s_, i, p, hints, s_.mass[q]);
+        store_step<F>(s_, i, p, hints, s_.mass[q]);
     }
 
-    Simulation& sim_;
+    const KernelContext& k_;
     ParticleState& s_;
     const Model& m_;
     const RoomBounds room_;
@@ -398,6 +394,7 @@ private:
     RangeOutput* out_;  // the current step's
     const std::uint32_t steps_;
     const std::uint64_t first_step_;
+    const double rho_;  // air density (body terms of the air load it per particle)
     std::size_t fast_ = 0;  // particle-steps phase 1 finished
     const bool adaptive_on_;
     const bool identical_;
@@ -422,32 +419,25 @@ private:
     const double h_;
 };
 
-// Adds a range's counters and warnings to the simulation (events are already in place).
-void merge(Simulation& sim, const RangeOutput& out) {
-    ForceCounters& c = sim.mutable_counters();
-    c.gravity += out.counters.gravity;
-    c.drag += out.counters.drag;
-    c.wind += out.counters.wind;
-    c.accepted_steps += out.counters.accepted_steps;
-    c.rejected_steps += out.counters.rejected_steps;
-    c.contacts += out.counters.contacts;
-    c.fast_path += out.counters.fast_path;
-    for (const std::uint32_t i : out.frozen) sim.raise(WarningKind::frozen, i);
+// Adds a range's counters and warnings to the kernel's (events are already in place).
+void merge(const KernelContext& k, const RangeOutput& out) {
+    k.counters += out.counters;
+    for (const std::uint32_t i : out.frozen) k.warnings.raise(WarningKind::frozen, i, k.time());
 }
 
-template <Flight M, DragModel Drag, bool HasWind>
-void fast_step_kernel(Simulation& sim, std::uint32_t steps) {
-    const std::size_t n = sim.particle_count();
-    const std::size_t ranges = particle_ranges(n, sim.threads());
+template <Flight M, class F>
+void fast_step_kernel(const KernelContext& k, std::uint32_t steps) {
+    const std::size_t n = k.state.size();
+    const std::size_t ranges = particle_ranges(n, k.threads);
     if (ranges <= 1 && steps == 1) {
         RangeOutput out;
-        out.events = &sim.event_sink();
-        RangeStepper<M, Drag, HasWind>(sim, &out, 1).run(0, n);
-        merge(sim, out);
-        sim.finish_step();
+        out.events = k.events.events;
+        RangeStepper<M, F>(k, &out, 1).run(0, n);
+        merge(k, out);
+        k.end_step();
         return;
     }
-    // One output per range and step (range k's steps at k * steps). Kept from call to call (one
+    // One output per range and step (range r's steps at r * steps). Kept from call to call (one
     // set per calling thread), so that the event vectors keep their room instead of being
     // allocated, grown and freed every call. The tasks reach it through `outs`: named inside a
     // task, `kept` would be the worker's own, empty copy.
@@ -460,40 +450,28 @@ void fast_step_kernel(Simulation& sim, std::uint32_t steps) {
         out.frozen.clear();
         out.counters = {};
     }
-    auto task = [&](std::size_t k) {
-        RangeStepper<M, Drag, HasWind>(sim, &outs[k * steps], steps)
-            .run(range_begin(n, ranges, k), range_begin(n, ranges, k + 1));
+    auto task = [&](std::size_t r) {
+        RangeStepper<M, F>(k, &outs[r * steps], steps)
+            .run(range_begin(n, ranges, r), range_begin(n, ranges, r + 1));
     };
     if (ranges == 1) task(0);
-    else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(sim.threads())), task);
+    else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(k.threads)), task);
     // Step by step, range by range: the order one step at a time gives.
-    std::vector<Event>& sink = sim.event_sink();
+    std::vector<Event>& sink = *k.events.events;
     for (std::uint32_t step = 0; step < steps; ++step) {
-        for (std::size_t k = 0; k < ranges; ++k) {
-            const RangeOutput& out = outs[k * steps + step];
+        for (std::size_t r = 0; r < ranges; ++r) {
+            const RangeOutput& out = outs[r * steps + step];
             sink.insert(sink.end(), out.own_events.begin(), out.own_events.end());
-            merge(sim, out);
+            merge(k, out);
         }
-        sim.finish_step();
+        k.end_step();
     }
 }
 
+// The kernel of method M for the terms the model enables.
 template <Flight M>
 StepKernel pick_forces(const Model& m) {
-    // Wind acts only through drag: without drag the wind field is never consulted.
-    const bool wind = m.world.wind.kind != WindKind::none && m.drag.model != DragModel::none;
-    switch (m.drag.model) {
-        case DragModel::none: return &fast_step_kernel<M, DragModel::none, false>;
-        case DragModel::linear:
-            return wind ? &fast_step_kernel<M, DragModel::linear, true> : &fast_step_kernel<M, DragModel::linear, false>;
-        case DragModel::quadratic:
-            return wind ? &fast_step_kernel<M, DragModel::quadratic, true>
-                        : &fast_step_kernel<M, DragModel::quadratic, false>;
-        case DragModel::sphere_re:
-            return wind ? &fast_step_kernel<M, DragModel::sphere_re, true>
-                        : &fast_step_kernel<M, DragModel::sphere_re, false>;
-    }
-    return &fast_step_kernel<M, DragModel::none, false>;
+    return terms::with_enabled_terms(m, []<class F>() -> StepKernel { return &fast_step_kernel<M, F>; });
 }
 
 }  // namespace

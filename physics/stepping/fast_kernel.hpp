@@ -34,7 +34,7 @@
 // branch-free selects they share).
 #pragma once
 
-#include "physics/stepping/simulation.hpp"
+#include "physics/stepping/kernel.hpp"
 
 #include <cstddef>
 

@@ -6,6 +6,7 @@
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/fast_kernel.hpp"
 #include "physics/model/forces.hpp"
+#include "physics/model/terms/wind.hpp"
 #include "physics/stepping/held_lanes.hpp"
 #include "physics/stepping/integrators.hpp"
 #include "physics/stepping/lane_math.hpp"
@@ -47,45 +48,21 @@ FlightState fixed_step(const FlightState& y, double t, double h, const F& f) {
 template <Flight M, bool HasWind>
 constexpr bool wind_ahead = HasWind && (M == Flight::explicit_euler || M == Flight::semi_implicit_euler);
 
-// Forces<Drag, true> for a particle whose wind w is already known: Forces::operator() computes
-// u = v - w, then everything from u, so still air evaluated at u gives the same bits (u - 0 is
-// u); the wind's work is dot(-c u, w) as there. fast_kernel_test checks the bits.
-template <DragModel Drag>
-struct KnownWindForces {
-    Forces<Drag, false> still_air;
-    Vec3 w{0.0};
-    Derivative operator()(const Vec3& x, const Vec3& v, double t) const {
-        const Vec3 u = v - w;
-        Derivative d = still_air(x, u, t);
-        d.wind_power = glm::dot(-still_air.drag_rate(u) * u, w);
-        return d;
-    }
+namespace detail {
+template <class F>
+struct with_known_wind;
+template <class... Terms>
+struct with_known_wind<Forces<Terms...>> {
+    using type = Forces<std::conditional_t<std::is_same_v<Terms, terms::Wind>, terms::KnownWind, Terms>...>;
 };
+}  // namespace detail
 
-// The force functor phase 1 uses for one particle, filled in place from scalars: GCC keeps it
-// in registers only if no glm vector or whole functor is copied (the copy of a union-based
-// glm::dvec3 blocks scalarisation, and with it vectorisation).
-template <Flight M, DragModel Drag, bool HasWind>
-using FlightForces = std::conditional_t<wind_ahead<M, HasWind>, KnownWindForces<Drag>, Forces<Drag, HasWind>>;
-
-template <DragModel Drag, bool HasWind>
-void set_forces(Forces<Drag, HasWind>& f, double gx, double gy, double gz, const WindField* wind, double k,
-                double re_scale, double, double, double) {
-    f.gravity.x = gx;
-    f.gravity.y = gy;
-    f.gravity.z = gz;
-    if constexpr (HasWind) f.wind = wind;
-    f.drag = {k, re_scale};
-}
-
-template <DragModel Drag>
-void set_forces(KnownWindForces<Drag>& f, double gx, double gy, double gz, const WindField*, double k,
-                double re_scale, double wx, double wy, double wz) {
-    set_forces(f.still_air, gx, gy, gz, nullptr, k, re_scale, 0.0, 0.0, 0.0);
-    f.w.x = wx;
-    f.w.y = wy;
-    f.w.z = wz;
-}
+// The force functor phase 1 uses for one particle, filled in place from scalars (Forces::load):
+// GCC keeps it in registers only if no glm vector or whole functor is copied (the copy of a
+// union-based glm::dvec3 blocks scalarisation, and with it vectorisation). Where the wind is
+// looked up ahead, the wind term is the one that holds the known w (terms/wind.hpp).
+template <Flight M, class F>
+using FlightForces = std::conditional_t<wind_ahead<M, F::has_wind>, typename detail::with_known_wind<F>::type, F>;
 
 // Phase 1 for particles [begin, end), at most fast_chunk of them: see fast_kernel.hpp. Sets bit
 // j of flagged[k] for particle begin + 64 k + j where it leaves the particle for phase 2 (and
@@ -97,16 +74,16 @@ void set_forces(KnownWindForces<Drag>& f, double gx, double gy, double gz, const
 // bench/RESULTS.md): masked stores are faster while the state is in cache, whole vectors when it
 // streams from memory (about +10% at 1e6 particles, -13% at 1e4). Out of line: inlined into the
 // range loop, its speed moved by up to 20% with unrelated changes to the code around it.
-template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVectors>
+template <Flight M, class F, bool Identical, bool WholeVectors>
 [[gnu::flatten, gnu::noinline]] std::size_t flight_chunk(ParticleState& s, std::size_t begin, std::size_t end,
-                                                         const Forces<Drag, HasWind>& forces, const RoomBounds& room,
-                                                         double t0, double h, const LaneBits* held_bits,
+                                                         const F& forces, const RoomBounds& room, double t0, double h,
+                                                         double air_density, const LaneBits* held_bits,
                                                          LaneBits* flagged) {
     // Local copies the stores below provably cannot alias.
     const double gx = forces.gravity.x, gy = forces.gravity.y, gz = forces.gravity.z;
     const double lo_x = room.lo.x, lo_y = room.lo.y, lo_z = room.lo.z;
     const double hi_x = room.hi.x, hi_y = room.hi.y, hi_z = room.hi.z;
-    const WindField* const wind = forces.wind;
+    const WindField* const wind = forces.wind_field();
     double* const px = s.x.data();
     double* const py = s.y.data();
     double* const pz = s.z.data();
@@ -121,7 +98,7 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
     const double* const re_scale = s.drag_re_scale.data();
     const double mass0 = mass[0], radius0 = radius[0], k0 = drag_k[0], re_scale0 = re_scale[0];
     double wx[fast_chunk], wy[fast_chunk], wz[fast_chunk];
-    if constexpr (wind_ahead<M, HasWind>) {
+    if constexpr (wind_ahead<M, F::has_wind>) {
         for (std::size_t i = begin; i < end; ++i) {
             const Vec3 w = wind->at(Vec3(px[i], py[i], pz[i]), t0);
             wx[i - begin] = w.x;
@@ -132,16 +109,17 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
     // One particle's flight; returns whether its new state was kept.
     const auto fly = [&](std::size_t i, bool free_lane) [[gnu::always_inline]] {
         double w[3] = {0.0, 0.0, 0.0};
-        if constexpr (wind_ahead<M, HasWind>) {
+        if constexpr (wind_ahead<M, F::has_wind>) {
             w[0] = wx[i - begin];
             w[1] = wy[i - begin];
             w[2] = wz[i - begin];
         }
         const double m = Identical ? mass0 : mass[i];
         const double r = Identical ? radius0 : radius[i];
-        FlightForces<M, Drag, HasWind> f;
-        set_forces(f, gx, gy, gz, wind, Identical ? k0 : drag_k[i], Identical ? re_scale0 : re_scale[i], w[0], w[1],
-                   w[2]);
+        FlightForces<M, F> f;
+        f.load({.gx = gx, .gy = gy, .gz = gz, .wind = wind, .k = Identical ? k0 : drag_k[i],
+                .re_scale = Identical ? re_scale0 : re_scale[i], .wx = w[0], .wy = w[1], .wz = w[2], .mass = m,
+                .radius = r, .air_density = air_density});
         FlightState y0;
         y0.x = Vec3(px[i], py[i], pz[i]);
         y0.v = Vec3(vx[i], vy[i], vz[i]);
@@ -175,10 +153,8 @@ template <Flight M, DragModel Drag, bool HasWind, bool Identical, bool WholeVect
         }
         // The generic kernel also adds mass * 0 to the bounce and friction ledgers, which
         // leaves them unchanged (they start at +0 and never become -0): skipped here.
-        if constexpr (Drag != DragModel::none) {
-            drag_loss[i] = take ? drag_loss[i] + m * y1.drag_loss : drag_loss[i];
-            if constexpr (HasWind) wind_work[i] = take ? wind_work[i] + m * y1.wind_gain : wind_work[i];
-        }
+        if constexpr (F::writes_drag) drag_loss[i] = take ? drag_loss[i] + m * y1.drag_loss : drag_loss[i];
+        if constexpr (F::writes_air_work) wind_work[i] = take ? wind_work[i] + m * y1.wind_gain : wind_work[i];
         return take;
     };
     // The flags of a group of 64 are ORed into its word in the loop. How the loop reads a

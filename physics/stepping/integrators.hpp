@@ -1,5 +1,5 @@
 // One step of each integration method for a single particle's flight state.
-// F is a Forces<...> functor: Derivative F(x, v, t), LinearisedForces F.linearise(x, v, t).
+// F is a Forces<Terms...> functor: Derivative F(x, v, t), LinearisedForces F.linearise(x, v, t).
 // The ledger entries (drag dissipation, wind work, per unit mass) are integrated alongside
 // x and v by the same method, so the energy residual measures the method's own error.
 #pragma once
@@ -83,7 +83,6 @@ FlightState rk4_step(const FlightState& y, double t, double h, const F& f) {
 template <class F>
 FlightState exponential_step(const FlightState& y, double t, double h, const F& f) {
     const LinearisedForces lin = f.linearise(y.x, y.v, t);
-    ++f.gravity_evals;
     const double k = lin.k, z = k * h;
     double e, phi1, phi2;
     if (z < 1e-4) {  // Taylor series: avoids cancellation in phi2
@@ -95,7 +94,7 @@ FlightState exponential_step(const FlightState& y, double t, double h, const F& 
         phi1 = -std::expm1(-z) / k;
         phi2 = (z - 1.0 + e) / (k * k);
     }
-    const Vec3 forcing = f.gravity + k * lin.wind;
+    const Vec3 forcing = lin.body + k * lin.wind;
     FlightState out;
     out.v = e * y.v + phi1 * forcing;
     out.x = y.x + phi1 * y.v + phi2 * forcing;
@@ -103,6 +102,9 @@ FlightState exponential_step(const FlightState& y, double t, double h, const F& 
     const Vec3 u0 = y.v - lin.wind, u1 = out.v - lin.wind;
     out.drag_loss = y.drag_loss + 0.5 * h * k * (glm::dot(u0, u0) + glm::dot(u1, u1));
     out.wind_gain = y.wind_gain - 0.5 * h * k * (glm::dot(u0, lin.wind) + glm::dot(u1, lin.wind));
+    // The constant body terms' work (buoyancy), by the same trapezoid.
+    if constexpr (F::has_extra_body)
+        out.wind_gain += 0.5 * h * (glm::dot(lin.extra, y.v) + glm::dot(lin.extra, out.v));
     return out;
 }
 

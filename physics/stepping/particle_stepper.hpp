@@ -16,7 +16,7 @@
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/events.hpp"
 #include "physics/stepping/integrators.hpp"
-#include "physics/stepping/simulation.hpp"
+#include "physics/stepping/kernel.hpp"
 
 #include <cmath>
 #include <vector>
@@ -58,24 +58,23 @@ inline ParticleStep load_step(const ParticleState& s, std::size_t i, const std::
     return p;
 }
 
-// store_step without the bounce and friction ledgers (the fast kernel adds those later).
-template <DragModel Drag, bool HasWind>
+// store_step without the bounce and friction ledgers (the fast kernel adds those later). The
+// ledger lines no enabled term writes are left untouched.
+template <class F>
 void store_motion(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass) {
     s.set_position(i, p.y.x);
     s.set_velocity(i, p.y.v);
     s.resting[i] = p.resting;
     if (hints) (*hints)[i] = p.step_hint;
-    if constexpr (Drag != DragModel::none) {
-        s.dissipated_drag[i] += mass * p.y.drag_loss;
-        if constexpr (HasWind) s.wind_work[i] += mass * p.y.wind_gain;
-    }
+    if constexpr (F::writes_drag) s.dissipated_drag[i] += mass * p.y.drag_loss;
+    if constexpr (F::writes_air_work) s.wind_work[i] += mass * p.y.wind_gain;
 }
 
 // Writes a stepped particle back, adding its ledger increments (per-kg losses times `mass`, the
 // particle's mass).
-template <DragModel Drag, bool HasWind>
+template <class F>
 void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass) {
-    store_motion<Drag, HasWind>(s, i, p, hints, mass);
+    store_motion<F>(s, i, p, hints, mass);
     s.dissipated_bounce[i] += mass * p.bounce_loss;
     s.dissipated_friction[i] += mass * p.friction_loss;
 }
@@ -83,9 +82,7 @@ void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vec
 // Adds what one kernel pass counted (force evaluations, adaptive steps, contact solves).
 template <class F>
 void add_counts(ForceCounters& c, const F& forces, const AdaptiveStats& adaptive, std::uint64_t contact_solves) {
-    c.gravity += forces.gravity_evals;
-    c.drag += forces.drag_evals;
-    c.wind += forces.wind_evals;
+    c += forces.evaluations();
     c.accepted_steps += adaptive.accepted;
     c.rejected_steps += adaptive.rejected;
     c.contacts += contact_solves;

@@ -6,7 +6,7 @@
 namespace pl {
 
 void relaunch_particle(Simulation& sim, std::size_t i, const Vec3& position, const Vec3& velocity) {
-    ParticleState& s = sim.mutable_state();
+    ParticleState& s = sim.state_;
     const Model& m = sim.model();
     const double mass = s.mass[i];
     const Vec3 inside = RoomBounds(m.room).clamp_inside(position, s.radius[i]);
@@ -17,7 +17,7 @@ void relaunch_particle(Simulation& sim, std::size_t i, const Vec3& position, con
     s.frozen[i] = 0;
     s.set_position(i, inside);
     sim.set_velocity(i, velocity);
-    if (!sim.adaptive_step_hint().empty()) sim.adaptive_step_hint()[i] = 0.0;  // dopri5 picks a fresh first step
+    if (!sim.adaptive_step_hint_.empty()) sim.adaptive_step_hint_[i] = 0.0;  // dopri5 picks a fresh first step
 }
 
 }  // namespace pl

@@ -4,11 +4,12 @@
 #pragma once
 
 #include "physics/model/drag.hpp"
-#include "physics/stepping/events.hpp"
-#include "physics/stepping/particle_state.hpp"
 #include "physics/model/scene.hpp"
-#include "physics/stepping/warnings.hpp"
 #include "physics/model/wind.hpp"
+#include "physics/stepping/events.hpp"
+#include "physics/stepping/kernel.hpp"
+#include "physics/stepping/particle_state.hpp"
+#include "physics/stepping/warnings.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -17,15 +18,6 @@
 
 namespace pl {
 
-// How often each force term was evaluated (one count per particle per evaluation).
-struct ForceCounters {
-    std::uint64_t gravity = 0, drag = 0, wind = 0;
-    std::uint64_t rejected_steps = 0;  // dopri5 only
-    std::uint64_t accepted_steps = 0;  // dopri5 internal steps
-    std::uint64_t contacts = 0;        // time-of-impact solves
-    std::uint64_t fast_path = 0;       // particle-steps the vectorised fast path finished
-};
-
 // What the monitor's scan found in a range of particles: the largest drag stiffness and, in
 // particle order, the particles that crossed a limit they have not been warned about yet.
 struct MonitorScan {
@@ -33,16 +25,6 @@ struct MonitorScan {
     ReRange reynolds{INFINITY, 0.0};  // of the particles in flight; empty (lo > hi) if none flew
     std::vector<std::uint32_t> suspects;
 };
-
-class Simulation;
-// A stepping kernel advances a simulation by `steps` (>= 1) fixed steps. For each step, in
-// order, it appends that step's events, raises its warnings and calls Simulation::finish_step(),
-// so that one call of `steps` steps leaves exactly what `steps` calls of one step would.
-using StepKernel = void (*)(Simulation&, std::uint32_t steps);
-
-// fast: the production kernel (fast_kernel.hpp: vectorised flight, threads); generic: the
-// scalar reference kernel, one ParticleStepper::advance per particle. Results are bit-identical.
-enum class KernelChoice : std::uint8_t { fast, generic };
 
 class Simulation {
 public:
@@ -90,7 +72,7 @@ public:
     const std::vector<Event>& events() const { return events_; }
     std::vector<Event> drain_events();
     // At most this many undrained events are kept; older ones are dropped and counted.
-    static constexpr std::size_t max_pending_events = 1u << 20;
+    static constexpr std::size_t max_pending_events = EventSink::max_pending;
     std::uint64_t dropped_events() const { return dropped_events_; }
     const std::vector<Warning>& warnings() const { return warnings_; }
     const ForceCounters& counters() const { return counters_; }
@@ -101,16 +83,13 @@ public:
     // Largest drag stiffness k (1/s) seen so far, over all particles.
     double max_drag_stiffness() const { return max_stiffness_; }
 
-    // Kernel plumbing (used by the kernels in simulation_kernels.cpp).
-    ParticleState& mutable_state() { return state_; }
-    std::vector<Event>& event_sink() { return events_; }
-    ForceCounters& mutable_counters() { return counters_; }
-    // Ends one step of a kernel call: the step counter and the cap on undrained events.
-    void finish_step();
-    // Records a warning at time() unless this particle had one of this kind already.
-    void raise(WarningKind kind, std::uint32_t particle, double value = 0.0);
+    // The stepping kernel alone for `steps` steps (<= steps_per_kernel_call), without the
+    // monitor's checks after it: what the engine benchmark times against the whole step.
+    void run_kernel(std::uint32_t steps) { kernel_(context(), steps); }
 
 private:
+    friend void relaunch_particle(Simulation& sim, std::size_t i, const Vec3& position, const Vec3& velocity);
+    KernelContext context();  // the data a kernel call works on
     void monitor();  // NaN guard, validity ranges, stability guard
     std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
 
@@ -131,8 +110,6 @@ private:
     double max_stiffness_ = 0.0;
     std::vector<MonitorScan> scans_;  // one per particle range, kept from sample to sample
     std::vector<double> adaptive_step_hint_;  // dopri5: last accepted internal step per particle
-public:
-    std::vector<double>& adaptive_step_hint() { return adaptive_step_hint_; }
 };
 
 }  // namespace pl

@@ -6,6 +6,7 @@
 #include "physics/stepping/simulation.hpp"
 
 #include "physics/model/drag.hpp"
+#include "physics/model/terms/term_list.hpp"
 #include "physics/stepping/fast_kernel.hpp"
 #include "physics/stepping/thread_pool.hpp"
 
@@ -25,16 +26,10 @@ struct MonitorLimits {
     double dt, stability_limit;  // warn when dt * stiffness > stability_limit
 };
 
-// Drag stiffness d|a_drag|/du, inlined for the models whose formula vectorises.
-template <DragModel Drag>
-double stiffness(double k, double re_scale, double u) {
-    if constexpr (Drag == DragModel::linear) return k;
-    else if constexpr (Drag == DragModel::quadratic) return 2.0 * k * u;
-    else return drag_stiffness(Drag, {k, re_scale}, u);
-}
-
 // Identical: every particle has the drag constants of particle 0 (read once, not streamed).
-template <DragModel Drag, bool HasWind, bool Identical>
+// F: the scene's forces (with a drag term); its drag term's stiffness is inlined (vectorised for
+// the linear and quadratic models).
+template <class F, bool Identical>
 void scan(const ParticleState& s, const WindField& wind, double t, const MonitorLimits& lim,
           const std::uint8_t* warned, std::size_t begin, std::size_t end, MonitorScan& out) {
     constexpr std::size_t chunk = 256;
@@ -51,7 +46,7 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
             // Kinds of warning the particle can still get (none while it rests or is frozen).
             unwarned[j] = skip[j] ? 0 : ~warned[c + j] & 0xff;
         }
-        if constexpr (HasWind) {
+        if constexpr (F::has_wind) {
             for (std::size_t j = 0; j < n; ++j) {
                 const Vec3 w = wind.at(s.position(c + j), t);
                 wx[j] = w.x;
@@ -84,7 +79,7 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
             const std::int64_t hi_bits = re_bits & in;
             re_lo = lo_bits < re_lo ? lo_bits : re_lo;
             re_hi = hi_bits > re_hi ? hi_bits : re_hi;
-            const double k = stiffness<Drag>(Identical ? k0 : drag_k[j], scale, u);
+            const double k = F::DragTerm::stiffness(Identical ? k0 : drag_k[j], scale, u);
             const std::int64_t k_bits = skip[j] == 0 ? std::bit_cast<std::int64_t>(k) : 0;
             max_k = k_bits > max_k ? k_bits : max_k;
             // Only what the particle has not been warned about yet.
@@ -103,24 +98,12 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
 using ScanFn = void (*)(const ParticleState&, const WindField&, double, const MonitorLimits&, const std::uint8_t*,
                         std::size_t, std::size_t, MonitorScan&);
 
-template <DragModel Drag, bool HasWind>
-ScanFn pick_scan(bool identical) {
-    return identical ? &scan<Drag, HasWind, true> : &scan<Drag, HasWind, false>;
-}
-
-template <DragModel Drag>
-ScanFn pick_scan(bool wind, bool identical) {
-    return wind ? pick_scan<Drag, true>(identical) : pick_scan<Drag, false>(identical);
-}
-
-ScanFn pick_scan(DragModel drag, bool wind, bool identical) {
-    switch (drag) {
-        case DragModel::linear: return pick_scan<DragModel::linear>(wind, identical);
-        case DragModel::quadratic: return pick_scan<DragModel::quadratic>(wind, identical);
-        case DragModel::sphere_re: return pick_scan<DragModel::sphere_re>(wind, identical);
-        case DragModel::none: break;
-    }
-    return nullptr;
+// The scan for the terms the model enables (null without drag: nothing to watch).
+ScanFn pick_scan(const Model& m, bool identical) {
+    return terms::with_enabled_terms(m, [identical]<class F>() -> ScanFn {
+        if constexpr (F::has_drag) return identical ? &scan<F, true> : &scan<F, false>;
+        else return nullptr;
+    });
 }
 
 }  // namespace
@@ -137,7 +120,7 @@ void Simulation::monitor() {
     const ReRange valid = drag_validity(model_.drag.model);
     const double limit = method_stability_limit(model_.integrator.method);
     const MonitorLimits lim{valid, dt(), limit};
-    const ScanFn scan_range = pick_scan(model_.drag.model, wind_.kind() != WindKind::none, identical_particles_);
+    const ScanFn scan_range = pick_scan(model_, identical_particles_);
     const std::size_t n = state_.size();
     const std::size_t ranges = particle_ranges(n, threads_);
     scans_.resize(ranges);
@@ -153,6 +136,7 @@ void Simulation::monitor() {
     if (ranges == 1) task(0);
     else ThreadPool::shared().run(ranges, std::min(ranges, thread_count(threads_)), task);
 
+    const WarningSink sink{&warnings_, &warned_};
     for (const MonitorScan& out : scans_) {
         max_stiffness_ = std::max(max_stiffness_, out.max_stiffness);
         reynolds_.lo = std::min(reynolds_.lo, out.reynolds.lo);
@@ -160,10 +144,10 @@ void Simulation::monitor() {
         for (const std::uint32_t i : out.suspects) {
             const double u = glm::length(air_velocity(i));
             const double re = state_.drag_re_scale[i] * u;
-            if (u > 0.0 && (re < valid.lo || re > valid.hi)) raise(WarningKind::drag_validity, i, re);
-            if (u > mach_warning_speed) raise(WarningKind::mach, i, u);
+            if (u > 0.0 && (re < valid.lo || re > valid.hi)) sink.raise(WarningKind::drag_validity, i, time(), re);
+            if (u > mach_warning_speed) sink.raise(WarningKind::mach, i, time(), u);
             const double k = drag_stiffness(model_.drag.model, {state_.drag_k[i], state_.drag_re_scale[i]}, u);
-            if (k * dt() > limit) raise(WarningKind::stability, i, k);
+            if (k * dt() > limit) sink.raise(WarningKind::stability, i, time(), k);
         }
     }
 }

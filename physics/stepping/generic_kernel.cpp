@@ -1,0 +1,66 @@
+// The generic (reference) stepping kernel: one ParticleStepper::advance per particle, scalar.
+// The fast kernel (fast_kernel.cpp) must give the same bits; tests/fast_kernel_test.cpp checks.
+#include "physics/model/terms/term_list.hpp"
+#include "physics/stepping/fast_kernel.hpp"
+#include "physics/stepping/kernel.hpp"
+#include "physics/stepping/particle_stepper.hpp"
+
+namespace pl {
+
+namespace {
+
+// One step of the generic kernel for one combination of enabled force terms.
+template <class F>
+void generic_step(const KernelContext& k) {
+    ParticleState& s = k.state;
+    const Model& m = k.model;
+    const RoomBounds room(m.room);
+    F f;
+    TermInputs in = scene_inputs(m, &k.wind);
+    AdaptiveStats adaptive;
+    std::uint64_t contact_solves = 0;
+    const bool adaptive_on = m.integrator.method == Method::dopri5 && m.integrator.adaptive;
+    const StepContext ctx{&room,          &m.contact, m.integrator.method, m.integrator.rtol, m.integrator.atol,
+                          k.events.events, adaptive_on ? &adaptive : nullptr, &contact_solves};
+    const ParticleStepper<F> stepper(ctx, f);
+    std::vector<double>* hints = adaptive_on ? &k.adaptive_hint : nullptr;
+    const double t0 = k.time(), h = m.integrator.dt;
+
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (s.frozen[i]) continue;
+        in.k = s.drag_k[i];
+        in.re_scale = s.drag_re_scale[i];
+        in.mass = s.mass[i];
+        in.radius = s.radius[i];
+        f.load(in);
+        ParticleStep p = load_step(s, i, hints, s.radius[i]);
+        stepper.advance(p, static_cast<std::uint32_t>(i), t0, h);
+        if (!is_finite(p.y)) {
+            // Keep the last finite state and stop stepping this particle.
+            s.frozen[i] = 1;
+            k.events.events->push_back(
+                {t0, static_cast<std::uint32_t>(i), -1, EventKind::frozen, glm::length(s.velocity(i)), 0.0});
+            k.warnings.raise(WarningKind::frozen, static_cast<std::uint32_t>(i), t0);
+            continue;
+        }
+        store_step<F>(s, i, p, hints, s.mass[i]);
+    }
+    add_counts(k.counters, f, adaptive, contact_solves);
+}
+
+template <class F>
+void step_kernel(const KernelContext& k, std::uint32_t steps) {
+    for (std::uint32_t n = 0; n < steps; ++n) {
+        generic_step<F>(k);
+        k.end_step();
+    }
+}
+
+}  // namespace
+
+StepKernel pick_kernel(const Model& m, KernelChoice choice) {
+    if (choice == KernelChoice::fast) return pick_fast_kernel(m);
+    return terms::with_enabled_terms(m, []<class F>() -> StepKernel { return &step_kernel<F>; });
+}
+
+}  // namespace pl

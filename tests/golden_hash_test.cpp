@@ -1,0 +1,225 @@
+// Golden determinism hashes (as Box2D's determinism test): every shipped preset and variant,
+// every method on one scene, and the wind kinds on a crowd, run a fixed number of steps; the
+// bits of the final state (positions, velocities, every ledger array, resting and frozen flags),
+// of the event list and of the warnings are hashed and compared with constants computed by the
+// engine before the force-term refactor (issue 24). A change that moves a single bit of any
+// trajectory fails here; such a change must say why in its commit and re-pin the constant.
+// Each case runs on one thread one step per call, and on two threads through step_n (several
+// steps per kernel call): both must give the pinned hash.
+// PL_GOLDEN_PRINT=1 prints the table of computed hashes (to re-pin after a deliberate change).
+#include "io/preset_io.hpp"
+#include "physics/stepping/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace pl {
+namespace {
+
+// FNV-1a, 64 bits (Fowler, Noll, Vo), over the bytes of each value in a fixed order.
+struct Fnv1a {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    void byte(std::uint8_t b) { h = (h ^ b) * 0x100000001b3ull; }
+    void u64(std::uint64_t v) {
+        for (int i = 0; i < 8; ++i) byte(static_cast<std::uint8_t>(v >> (8 * i)));
+    }
+    void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
+    template <class A>
+    void doubles(const A& a) {
+        u64(a.size());
+        for (const double v : a) f64(v);
+    }
+    template <class A>
+    void bytes(const A& a) {
+        u64(a.size());
+        for (const std::uint8_t v : a) byte(v);
+    }
+};
+
+std::uint64_t hash_result(const Simulation& sim) {
+    const ParticleState& s = sim.state();
+    Fnv1a f;
+    for (const auto* a : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.dissipated_bounce, &s.dissipated_friction,
+                          &s.dissipated_drag, &s.wind_work, &s.initial_energy})
+        f.doubles(*a);
+    f.bytes(s.resting);
+    f.bytes(s.frozen);
+    f.u64(sim.events().size());
+    for (const Event& e : sim.events()) {
+        f.f64(e.t);
+        f.u64(e.particle);
+        f.u64(static_cast<std::uint64_t>(static_cast<std::int64_t>(e.wall)));
+        f.byte(static_cast<std::uint8_t>(e.kind));
+        f.f64(e.speed_in);
+        f.f64(e.speed_out);
+    }
+    f.u64(sim.dropped_events());
+    f.u64(sim.warnings().size());
+    for (const Warning& w : sim.warnings()) {
+        f.byte(static_cast<std::uint8_t>(w.kind));
+        f.u64(w.particle);
+        f.f64(w.t);
+        f.f64(w.value);
+    }
+    f.u64(sim.step_count());
+    return f.h;
+}
+
+Scene load(const std::string& file) {
+    const LoadResult r = load_preset(std::string(PL_SOURCE_DIR) + "/presets/" + file);
+    if (!r.ok()) ADD_FAILURE() << file << ": " << r.error_text();
+    return r.scene.value_or(Scene{});
+}
+
+// The same 10000-particle emitter as many_particles.json, cut to 4096 particles: two ranges on
+// two threads (ranges split at >= 2048 particles), and quick enough for every method.
+Scene with_crowd(Scene scene) {
+    Scene crowd = load("many_particles.json");
+    scene.particles.clear();
+    scene.emitter = crowd.emitter;
+    scene.emitter->count = 4096;
+    return scene;
+}
+
+struct Case {
+    const char* name;  // preset file, or a description of the scene
+    std::size_t variant;
+    std::uint64_t steps;
+    std::uint64_t hash;  // pinned: computed by the engine before the refactor
+};
+
+std::uint64_t run(const Scene& scene, std::size_t variant, std::uint64_t steps, int threads) {
+    Simulation sim(model_for_variant(scene, variant), initial_particles(scene));
+    sim.set_threads(threads);
+    if (threads == 1) {
+        for (std::uint64_t k = 0; k < steps; ++k) sim.step();
+    } else {
+        sim.step_n(steps);
+    }
+    return hash_result(sim);
+}
+
+void check(const Scene& scene, const Case& c) {
+    const std::uint64_t one = run(scene, c.variant, c.steps, 1);
+    const std::uint64_t two = run(scene, c.variant, c.steps, 2);
+    if (std::getenv("PL_GOLDEN_PRINT"))
+        std::printf("    {\"%s\", %zu, %llu, 0x%016llxull},\n", c.name, c.variant,
+                    static_cast<unsigned long long>(c.steps), static_cast<unsigned long long>(one));
+    EXPECT_EQ(one, c.hash) << c.name << " variant " << c.variant << " on 1 thread";
+    EXPECT_EQ(two, c.hash) << c.name << " variant " << c.variant << " on 2 threads";
+}
+
+// Every shipped preset, every variant. Small scenes run long enough to bounce, rest and slide.
+const Case preset_cases[] = {
+    {"altitude_air.json", 0, 2500, 0x9d712657ea4c275dull},
+    {"altitude_air.json", 1, 2500, 0x7aab62e05eb89379ull},
+    {"default.json", 0, 2500, 0xf7ea62c8de8bbb63ull},
+    {"drag_models.json", 0, 2500, 0x6899021c8e5c8820ull},
+    {"drag_models.json", 1, 2500, 0x5dc0465278cf9e39ull},
+    {"drag_models.json", 2, 2500, 0x7da6fa051878b07bull},
+    {"drag_models.json", 3, 2500, 0x881d26bbc2aad505ull},
+    {"drop_restitution_0.8.json", 0, 2500, 0x677923342be4ec2full},
+    {"dt_ladder.json", 0, 2500, 0x6de48a23890acf4bull},
+    {"dt_ladder.json", 1, 2500, 0x1f7913a2cf5ade3bull},
+    {"dt_ladder.json", 2, 2500, 0x6952dc4e870ce4efull},
+    {"dt_ladder.json", 3, 2500, 0x3ce1b2eeed586893ull},
+    {"dt_ladder.json", 4, 2500, 0x9c235d7f1fa0ad8eull},
+    {"feather_vs_ball.json", 0, 2500, 0x378d3a96c5662d81ull},
+    {"feather_vs_ball.json", 1, 2500, 0x26705c5fd3f15b96ull},
+    {"friction_slide.json", 0, 2500, 0x6f943ba77bf7be15ull},
+    {"integrators.json", 0, 2500, 0x01909e37ef96a59aull},
+    {"integrators.json", 1, 2500, 0x6952dc4e870ce4efull},
+    {"integrators.json", 2, 2500, 0xcf87683fd51f74feull},
+    {"integrators.json", 3, 2500, 0x87d41b4302fbfaf4ull},
+    {"integrators.json", 4, 2500, 0x1671a6cf90b282c6ull},
+    {"integrators.json", 5, 2500, 0x920f55b49777b5f2ull},
+    {"launch_velocities.json", 0, 2500, 0x42eced51bcaeb8f5ull},
+    {"many_particles.json", 0, 500, 0xbade06faa47c8bc6ull},
+    {"restitution.json", 0, 2500, 0xa6abca908c24ebafull},
+    {"restitution.json", 1, 2500, 0x677923342be4ec2full},
+    {"restitution.json", 2, 2500, 0xe0a8d6a32b3b9075ull},
+    {"wind_kinds.json", 0, 2500, 0x9757d91259dfdbc5ull},
+    {"wind_kinds.json", 1, 2500, 0x2c2eb9cfbb30b41cull},
+    {"wind_kinds.json", 2, 2500, 0xae796826b6c5fa9cull},
+    {"wind_kinds.json", 3, 2500, 0x40385abdfa33b66aull},
+    {"wind_kinds.json", 4, 2500, 0x5054471d31d91e6full},
+};
+
+TEST(GoldenHash, EveryPresetAndVariant) {
+    for (const Case& c : preset_cases) {
+        const Scene scene = load(c.name);
+        ASSERT_LT(c.variant, variant_count(scene)) << c.name;
+        check(scene, c);
+    }
+}
+
+TEST(GoldenHash, ShippedPresetsAreAllCovered) {
+    std::size_t cases = 0, variants = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(PL_SOURCE_DIR) + "/presets")) {
+        if (entry.path().extension() != ".json") continue;
+        variants += variant_count(load(entry.path().filename().string()));
+    }
+    for (const Case& c : preset_cases) cases += c.variant == 0 ? 1 : 0;
+    EXPECT_EQ(std::size(preset_cases), variants) << "a preset or variant without a golden hash";
+    EXPECT_GT(cases, 0u);
+}
+
+// Each method on default.json (one ball, long), index = Method's value.
+const std::uint64_t method_hashes[] = {
+    0xbfc6b838aeda010cull, 0xf7ea62c8de8bbb63ull, 0x0001b758883bec5dull,
+    0x1cfd20996ca5bc1full, 0xde98630b8b14f463ull, 0xea890d0aee6d817dull,
+};
+// Each method on default.json's room filled by the crowd emitter (fast path, two ranges).
+const std::uint64_t method_crowd_hashes[] = {
+    0x97b1b580b01701a7ull, 0x6a382dc554749aa7ull, 0x4ac5419e9c13892full,
+    0xc151893a1189e86aull, 0xa1810599475cc7f5ull, 0x2c13ab73234318bfull,
+};
+
+TEST(GoldenHash, EveryMethod) {
+    const Scene base = load("default.json");
+    for (int m = 0; m <= static_cast<int>(Method::exponential); ++m) {
+        Scene scene = base;
+        scene.integrator.method = static_cast<Method>(m);
+        const std::string name = std::string("default.json ") + to_string(scene.integrator.method);
+        check(scene, {name.c_str(), 0, 2500, method_hashes[m]});
+        const std::string crowd = name + " crowd";
+        check(with_crowd(scene), {crowd.c_str(), 0, 250, method_crowd_hashes[m]});
+    }
+}
+
+// Each wind kind on the crowd (wind in the vectorised and the scalar flight, on two ranges),
+// index = WindKind's value; with quadratic and linear drag (the wind acts through the drag).
+const std::uint64_t wind_quadratic_hashes[] = {
+    0x6a382dc554749aa7ull, 0x4238dc1a2e62d293ull, 0x13f9b67a4ae8c22eull,
+    0xf5652d5d050b89edull, 0x7d41f163bb15b42dull,
+};
+const std::uint64_t wind_linear_hashes[] = {
+    0x05505767e585f71full, 0x2820bee7b27fa19cull, 0x2b6ba3237d005723ull,
+    0xf6b2a82c24856f2eull, 0xc6e12fd6a9f2a6daull,
+};
+
+TEST(GoldenHash, EveryWindKindOnACrowd) {
+    const Scene base = with_crowd(load("wind_kinds.json"));
+    for (int w = 0; w <= static_cast<int>(WindKind::vortex); ++w) {
+        for (const DragModel d : {DragModel::quadratic, DragModel::linear}) {
+            Scene scene = base;
+            scene.variants.clear();
+            scene.drag.model = d;
+            // wind_kinds.json's variants are the kinds in WindKind's order.
+            scene.world.wind = model_for_variant(base, static_cast<std::size_t>(w)).world.wind;
+            EXPECT_EQ(scene.world.wind.kind, static_cast<WindKind>(w));
+            const std::string name = std::string("crowd wind ") + to_string(scene.world.wind.kind) + " " + to_string(d);
+            const std::uint64_t* pinned = d == DragModel::quadratic ? wind_quadratic_hashes : wind_linear_hashes;
+            check(scene, {name.c_str(), 0, 250, pinned[w]});
+        }
+    }
+}
+
+}  // namespace
+}  // namespace pl
