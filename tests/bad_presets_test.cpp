@@ -224,7 +224,7 @@ TEST(BadPresetFiles, TooLargeFileIsNotRead) {
     fs::resize_file(file, max_preset_file_bytes + 1);  // sparse: no disk space used
     const LoadResult r = load_preset(file);
     expect_well_formed(r, "too large");
-    EXPECT_NE(r.error_text().find("is too large (67108865 bytes; at most 67108864 bytes)"), std::string::npos)
+    EXPECT_NE(r.error_text().find("is too large (67108865 bytes; the preset size limit is 67108864 bytes)"), std::string::npos)
         << r.error_text();
 }
 

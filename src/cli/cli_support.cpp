@@ -16,11 +16,22 @@ void print_error(const std::string& command, const std::string& message) {
     std::fprintf(stderr, "particle-lab %s: %s\n", command.c_str(), message.c_str());
 }
 
+namespace {
+std::size_t max_preset_bytes = max_preset_file_bytes;  // --max-preset-bytes of the running command
+}
+
+void add_max_preset_bytes_option(CLI::App& command) {
+    command.add_option("--max-preset-bytes", max_preset_bytes, "largest preset file read, in bytes")
+        ->capture_default_str()
+        ->check(positive_integer());
+}
+
 std::optional<Scene> load_scene(const std::string& command, const std::string& path) {
-    LoadResult r = load_preset(path);
+    LoadResult r = load_preset(path, max_preset_bytes);
     if (r.ok()) return std::move(r.scene);
     if (r.errors.size() == 1 && r.errors.front().path.empty()) {  // the file itself: missing, unreadable, ...
-        print_error(command, r.errors.front().message);
+        print_error(command, r.errors.front().message +
+                                 (r.over_size_limit ? "; raise it with --max-preset-bytes BYTES" : ""));
         return std::nullopt;
     }
     print_error(command, fmt::format("{}: not a valid preset ({} error{}):", path, r.errors.size(),

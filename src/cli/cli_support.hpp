@@ -29,6 +29,9 @@ void add_bench_command(CLI::App& app, int& exit_code);
 // command name, and returns nothing (the caller exits with exit_bad_input).
 std::optional<Scene> load_scene(const std::string& command, const std::string& path);
 
+// Adds --max-preset-bytes (the file-size limit load_scene applies) to a command reading a preset.
+void add_max_preset_bytes_option(CLI::App& command);
+
 // Prints "particle-lab COMMAND: MESSAGE" to stderr.
 void print_error(const std::string& command, const std::string& message);
 

@@ -44,6 +44,8 @@ int run_command(int argc, char** argv) {
     add_stability_command(app, exit_code);
     add_advise_command(app, exit_code);
     add_bench_command(app, exit_code);
+    for (CLI::App* command : app.get_subcommands({}))
+        if (command->get_option_no_throw("PRESET") != nullptr) add_max_preset_bytes_option(*command);
     if (argc >= 2 && std::strcmp(argv[1], "help") == 0) {
         std::cout << app.help();
         return exit_ok;
