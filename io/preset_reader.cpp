@@ -72,6 +72,9 @@ constexpr double max_room_size_m = 1e6;
 constexpr double max_speed_mps = 1e5;
 constexpr double max_gravity_mps2 = 1e4;
 constexpr double max_mass_kg = 1e6;
+// Lightest particle: about a 1 um dust grain (4e-15 kg). Lighter ones are Brownian, outside this
+// model, and a mass such as 5e-324 made the drag stiffness infinite (the particle froze).
+constexpr double min_mass_kg = 1e-15;
 constexpr double max_density_kg_m3 = 1e5;
 constexpr double max_viscosity_pa_s = 1e3;
 constexpr double max_cd = 100.0;
@@ -403,7 +406,7 @@ private:
                                       [&](const std::string& key, const PresetJson& v, const std::string& p) {
             if (key == "position") position_ok = vec3(v, p, s.position, any_finite());
             else if (key == "velocity") bounded_vec3(v, p, s.velocity, max_speed_mps);
-            else if (key == "mass") number(v, p, s.mass, positive(max_mass_kg));
+            else if (key == "mass") number(v, p, s.mass, Bounds{min_mass_kg, false, max_mass_kg, false, false});
             else radius_ok = number(v, p, s.radius, positive(max_room_size_m));
         });
         require(j, path, {"position"});
@@ -442,8 +445,8 @@ private:
                    else if (key == "speed_max") speed_max_ok = number(v, p, e.speed_max, non_negative(max_speed_mps));
                    else if (key == "direction") direction(v, p, e.direction);
                    else if (key == "spread_deg") number(v, p, e.spread_deg, closed(0.0, 180.0));
-                   else if (key == "mass_min") mass_min_ok = number(v, p, e.mass_min, positive(max_mass_kg));
-                   else if (key == "mass_max") mass_max_ok = number(v, p, e.mass_max, positive(max_mass_kg));
+                   else if (key == "mass_min") mass_min_ok = number(v, p, e.mass_min, Bounds{min_mass_kg, false, max_mass_kg, false, false});
+                   else if (key == "mass_max") mass_max_ok = number(v, p, e.mass_max, Bounds{min_mass_kg, false, max_mass_kg, false, false});
                    else if (key == "radius_min") radius_min_ok = number(v, p, e.radius_min, positive(max_room_size_m));
                    else radius_max_ok = number(v, p, e.radius_max, positive(max_room_size_m));
                });

@@ -35,6 +35,9 @@ void add_max_preset_bytes_option(CLI::App& command);
 // Prints "particle-lab COMMAND: MESSAGE" to stderr.
 void print_error(const std::string& command, const std::string& message);
 
+// `text` safe to print on a terminal: control characters written as \x1b or \u009b.
+std::string printable(const std::string& text);
+
 // A variant's name for tables and CSV: its label, or its index when the scene has no variants
 // (or the label is empty).
 std::string variant_name(const Scene& scene, std::size_t variant);
@@ -68,6 +71,7 @@ std::string sig(const std::optional<double>& value, int digits = 4);  // "-" whe
 // Option checks with messages that state the rule ("must be a number > 0, got 'abc'").
 CLI::Validator positive_number();
 CLI::Validator positive_integer();
+CLI::Validator whole_number_at_least(unsigned long long least);
 
 // A variant given by label or by index; empty when there is none such.
 std::optional<std::size_t> find_variant(const Scene& scene, const std::string& label_or_index);

@@ -2,6 +2,7 @@
 #include "cli/cli_support.hpp"
 
 #include "cli/interrupt.hpp"
+#include "cli/resource_check.hpp"
 #include "io/atomic_output.hpp"
 #include "io/csv_writer.hpp"
 #include "physics/stepping/energy.hpp"
@@ -11,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <memory>
@@ -77,14 +79,14 @@ void print_warnings(const Simulation& sim, std::FILE* out, const std::string& pr
 }
 
 void print_summary(const Scene& scene, const std::vector<Simulation>& sims, const std::vector<std::array<std::uint64_t, 5>>& event_counts) {
-    std::printf("%s: %zu particle%s, %zu variant%s\n", scene.name.c_str(), sims.front().particle_count(),
+    std::printf("%s: %zu particle%s, %zu variant%s\n", printable(scene.name).c_str(), sims.front().particle_count(),
                 sims.front().particle_count() == 1 ? "" : "s", sims.size(), sims.size() == 1 ? "" : "s");
     for (std::size_t v = 0; v < sims.size(); ++v) {
         const Simulation& sim = sims[v];
         const Model& m = sim.model();
         const EnergyBreakdown e = total_energy(sim.state(), m.world.gravity, m.room);
         const auto& n = event_counts[v];
-        std::printf("\nvariant %s  (%s, dt = %s s, drag %s, wind %s)\n", variant_name(scene, v).c_str(),
+        std::printf("\nvariant %s  (%s, dt = %s s, drag %s, wind %s)\n", printable(variant_name(scene, v)).c_str(),
                     to_string(m.integrator.method), sig(m.integrator.dt, 6).c_str(), to_string(m.drag.model),
                     to_string(m.world.wind.kind));
         std::printf("  time %s s, %llu steps\n", sig(sim.time(), 10).c_str(), static_cast<unsigned long long>(sim.step_count()));
@@ -143,6 +145,12 @@ int run(const RunOptions& o) {
         print_error("run", "--duration: " + plan.error);
         return exit_bad_input;
     }
+    const std::uint64_t particle_count = scene->particles.size() + (scene->emitter ? scene->emitter->count : 0);
+    if (const std::string refused = check_work("run", {particle_count, variant_count(*scene), double(plan.base_steps)});
+        !refused.empty()) {
+        print_error("run", refused);
+        return exit_bad_input;
+    }
     if (const std::string conflict = output_conflict(o); !conflict.empty()) {
         print_error("run", conflict);
         return exit_bad_input;
@@ -177,7 +185,11 @@ int run(const RunOptions& o) {
     // changes no result.
     const std::uint64_t stride = traj || events ? std::max<std::uint64_t>(o.every, 1) : 256;
     const std::uint64_t drain = std::min(stride, event_drain_interval(particles.size()));
-    for (std::uint64_t k = std::min(drain, plan.base_steps);; k = std::min(k + drain, plan.base_steps)) {
+    // The next stop: a drain point or the next output point (a multiple of K), whichever is first.
+    const auto next_stop = [&](std::uint64_t k) {
+        return std::min({k + drain, (k / stride + 1) * stride, plan.base_steps});
+    };
+    for (std::uint64_t k = next_stop(0);; k = next_stop(k)) {
         const bool last = k == plan.base_steps;
         const bool output_point = k % stride == 0 || last;
         for (std::size_t v = 0; v < sims.size(); ++v) {
