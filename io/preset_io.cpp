@@ -43,6 +43,7 @@
 // is reported with its JSON path. Saved files list every field, defaults included.
 #include "io/preset_io.hpp"
 
+#include "io/atomic_output.hpp"
 #include "io/preset_parse.hpp"
 #include "io/preset_reader.hpp"
 
@@ -298,14 +299,16 @@ SaveResult save_preset(const std::filesystem::path& file, const Scene& scene) {
         return {false, fmt::format("not saving {}: the preset would be {} bytes, more than the {} a preset may have "
                                    "(use an emitter for many particles)",
                                    target, text.size(), max_preset_file_bytes)};
+    // A symlinked preset is saved through the link: the file it leads to is replaced.
+    const fs::path real = write_target(file);
     std::error_code ec;
-    const fs::file_status status = fs::status(file, ec);
+    const fs::file_status status = fs::status(real, ec);
     const bool exists = fs::exists(status);
     if (fs::is_directory(status)) return {false, "cannot save preset to " + target + ": it is a directory"};
 
-    fs::path tmp = file;
-    tmp += ".tmp";
-    fs::path bak = file;
+    // A unique temporary name per save: two writers of the same preset never share one.
+    fs::path tmp;
+    fs::path bak = real;
     bak += ".bak";
     const auto fail = [&](const std::string& what, int error_number, bool remove_tmp) {
         if (remove_tmp) ::unlink(tmp.c_str());  // unlink never removes a directory
@@ -313,10 +316,10 @@ SaveResult save_preset(const std::filesystem::path& file, const Scene& scene) {
                                      " (the existing file is unchanged)"};
     };
 
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
-    if (fd < 0) return fail("cannot create " + quoted_path(tmp), errno, false);
+    const int fd = create_temp_beside(real, tmp);
+    if (fd < 0) return fail("cannot create a temporary file beside it", errno, false);
     struct stat previous {};
-    if (exists && ::stat(file.c_str(), &previous) == 0) ::fchmod(fd, previous.st_mode & 07777);  // keep its permissions
+    if (exists && ::stat(real.c_str(), &previous) == 0) ::fchmod(fd, previous.st_mode & 07777);  // keep its permissions
     if (!write_all(fd, text) || ::fsync(fd) != 0) {
         const int e = errno;
         ::close(fd);
@@ -325,13 +328,13 @@ SaveResult save_preset(const std::filesystem::path& file, const Scene& scene) {
     if (::close(fd) != 0) return fail("cannot write " + quoted_path(tmp), errno, true);
 
     if (exists) {
-        fs::copy_file(file, bak, fs::copy_options::overwrite_existing, ec);
+        fs::copy_file(real, bak, fs::copy_options::overwrite_existing, ec);
         if (ec) return fail("cannot keep the previous file as " + quoted_path(bak), ec.value(), true);
     }
-    if (::rename(tmp.c_str(), file.c_str()) != 0) return fail("cannot rename " + quoted_path(tmp) + " over it", errno, true);
+    if (::rename(tmp.c_str(), real.c_str()) != 0) return fail("cannot rename " + quoted_path(tmp) + " over it", errno, true);
 
     // Make the rename itself durable (best effort: not every file system supports it).
-    const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    const fs::path dir = real.has_parent_path() ? real.parent_path() : fs::path(".");
     if (const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
         ::fsync(dfd);
         ::close(dfd);

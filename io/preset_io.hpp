@@ -44,7 +44,8 @@ struct SaveResult {
     bool ok = false;
     std::string error;  // why it failed; the target file is untouched then
 };
-// Atomic: writes `file.tmp`, flushes, keeps the previous file as `file.bak`, renames over it.
+// Atomic: writes a uniquely named `file.tmp.XXXXXX` beside it, flushes, keeps the previous file
+// as `file.bak`, renames over it. A symlink is followed: the file it leads to is replaced.
 SaveResult save_preset(const std::filesystem::path& file, const Scene& scene);
 
 }  // namespace pl
