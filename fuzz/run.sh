@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ./lab fuzz [SECONDS]: builds the preset-loader fuzzer with clang (libFuzzer + AddressSanitizer +
 # UndefinedBehaviorSanitizer) into build/fuzz/ and runs it for SECONDS (default 60), seeded with
-# the bad-preset catalogue and the shipped presets. Crashing inputs are kept in build/fuzz/.
+# the bad-preset catalogue, the shipped presets and fuzz/hostile_corpus (huge, deep inputs).
+# Crashing inputs are kept in build/fuzz/.
 set -euo pipefail
 cd "$(dirname "$(readlink -f "$0")")/.."
 
@@ -29,7 +30,7 @@ fi
 out=build/fuzz
 binary=$out/preset_fuzzer
 # The loader and what it links against; nothing else of physics/ is needed.
-sources=(fuzz/preset_fuzzer.cpp io/preset_io.cpp io/preset_reader.cpp io/preset_paths.cpp io/value_reader.cpp io/preset_writer.cpp physics/model/scene.cpp physics/model/emitter.cpp)
+sources=(fuzz/preset_fuzzer.cpp io/preset_io.cpp io/preset_parse.cpp io/preset_reader.cpp io/preset_paths.cpp io/value_reader.cpp io/preset_writer.cpp physics/model/scene.cpp physics/model/emitter.cpp)
 mkdir -p "$out"
 # The same include roots as the CMake targets: only physics/ and io/ are visible.
 mkdir -p "$out/include"
@@ -46,8 +47,11 @@ fi
 # catalogue in tests/ is only ever read.
 corpus=$(mktemp -d "${TMPDIR:-/tmp}/pl_fuzz_corpus.XXXXXX")
 trap 'rm -rf "$corpus"' EXIT
-cp tests/bad_presets/*.json presets/*.json "$corpus"/
+cp tests/bad_presets/*.json presets/*.json fuzz/hostile_corpus/*.json "$corpus"/
+# libFuzzer takes one dictionary: the format's tokens plus the structure-aware hostile entries.
+cat fuzz/preset.dict fuzz/hostile.dict >"$corpus.dict"
+trap 'rm -rf "$corpus" "$corpus.dict"' EXIT
 
 echo "fuzz: running for $seconds s on $(ls "$corpus" | wc -l) seed inputs" >&2
 "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
-  -dict=fuzz/preset.dict -artifact_prefix="$out/" -print_final_stats=1 "$corpus"
+  -dict="$corpus.dict" -artifact_prefix="$out/" -print_final_stats=1 "$corpus"

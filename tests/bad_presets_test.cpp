@@ -45,6 +45,13 @@ std::vector<std::string> expectation_lines(const fs::path& file) {
     return lines;
 }
 
+// Whether a save left a temporary file (NAME.tmp.XXXXXX) behind.
+bool has_temporary_files(const fs::path& dir) {
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().filename().string().find(".tmp") != std::string::npos) return true;
+    return false;
+}
+
 bool running_as_root() { return ::geteuid() == 0; }
 
 // Errors without a path concern the whole document (or the file), never a single field.
@@ -224,7 +231,7 @@ TEST(BadPresetFiles, TooLargeFileIsNotRead) {
     fs::resize_file(file, max_preset_file_bytes + 1);  // sparse: no disk space used
     const LoadResult r = load_preset(file);
     expect_well_formed(r, "too large");
-    EXPECT_NE(r.error_text().find("is too large (67108865 bytes; at most 67108864 bytes)"), std::string::npos)
+    EXPECT_NE(r.error_text().find("is too large (67108865 bytes; the preset size limit is 67108864 bytes)"), std::string::npos)
         << r.error_text();
 }
 
@@ -269,21 +276,29 @@ TEST(BadPresetSave, UnwritableDirectoryFailsAndKeepsTheFile) {
     fs::permissions(s.dir.path, fs::perms::owner_read | fs::perms::owner_exec);
     s.expect_failure_keeps_file("Permission denied");
     fs::permissions(s.dir.path, fs::perms::owner_all);
-    EXPECT_FALSE(fs::exists(s.dir.path / "keep.json.tmp"));
+    EXPECT_FALSE(has_temporary_files(s.dir.path));
 }
 
 TEST(BadPresetSave, TemporaryFileBlockedFailsAndKeepsTheFile) {
-    SaveOverExisting s;
-    fs::create_directory(s.dir.path / "keep.json.tmp");  // the temp file cannot be created
-    s.expect_failure_keeps_file("cannot create");
-    EXPECT_TRUE(fs::is_directory(s.dir.path / "keep.json.tmp")) << "only files this save created are removed";
+    // A 250-character name is a valid file, but its temporary sibling's name is too long.
+    TempDir dir;
+    const fs::path file = dir.path / (std::string(245, 'k') + ".json");
+    fs::copy_file(default_preset, file);
+    const std::string original = read_bytes(file);
+    Scene changed = load_preset(file).scene.value();
+    changed.contact.restitution = 0.3;
+    const SaveResult r = save_preset(file, changed);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("cannot create a temporary file beside it: File name too long"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("the existing file is unchanged"), std::string::npos) << r.error;
+    EXPECT_EQ(read_bytes(file), original);
 }
 
 TEST(BadPresetSave, BackupBlockedFailsKeepsTheFileAndRemovesTheTemporary) {
     SaveOverExisting s;
     fs::create_directories(s.dir.path / "keep.json.bak" / "occupied");
     s.expect_failure_keeps_file("cannot keep the previous file as");
-    EXPECT_FALSE(fs::exists(s.dir.path / "keep.json.tmp"));
+    EXPECT_FALSE(has_temporary_files(s.dir.path));
 }
 
 TEST(BadPresetSave, MissingDirectoryFailsClearly) {

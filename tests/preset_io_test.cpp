@@ -121,7 +121,7 @@ Scene awkward_scene() {
     s.integrator = {Method::dopri5, 1.0 / 1024.0, 1e-12, 1e-15, false};
     // The first particle touches three walls (centre exactly a radius from each).
     const Vec3 lo = s.room.min_corner(), hi = s.room.max_corner();
-    s.particles = {{{lo.x + 0.033, lo.y + 0.033, hi.z - 0.033}, {99999.99999999999, -0.0, 1e-310}, 1e-30, 0.033},
+    s.particles = {{{lo.x + 0.033, lo.y + 0.033, hi.z - 0.033}, {99999.99999999999, -0.0, 1e-310}, 3.0000000000000004e-15, 0.033},
                    {{0.1 + 0.2, -1.0 / 3.0, 5e-324}, {3, 4, 1}, 1e6, 2.9999999999999996}};
     Emitter e;
     e.count = max_preset_particles - s.particles.size();
@@ -405,11 +405,11 @@ TEST(PresetErrors, EveryProblemIsReportedWithPathAndRule) {
         "contact.restitution: must be in [0, 1], got 1.5\n"
         "integrator.method: unknown value \"rk5\"; expected one of explicit_euler, semi_implicit_euler, "
         "velocity_verlet, rk4, dopri5, exponential\n"
-        "particles[2].mass: must be > 0, got -1";
+        "particles[2].mass: must be >= 1e-15, got -1";
     EXPECT_EQ(r.error_text(), expected);
     ASSERT_EQ(r.errors.size(), 5u);
     EXPECT_EQ(r.errors[4].path, "particles[2].mass");
-    EXPECT_EQ(r.errors[4].message, "must be > 0, got -1");
+    EXPECT_EQ(r.errors[4].message, "must be >= 1e-15, got -1");
 }
 
 TEST(PresetErrors, ParticleThatDoesNotFitNamesItsRadiusAndPosition) {
@@ -480,7 +480,7 @@ TEST(PresetSave, RefusesAnInvalidSceneAndWritesNothing) {
     s.integrator.dt = std::numeric_limits<double>::quiet_NaN();
     const SaveResult r = save_preset(file, s);
     EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.error.find("particles[0].mass: must be > 0, got -1"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("particles[0].mass: must be >= 1e-15, got -1"), std::string::npos) << r.error;
     EXPECT_NE(r.error.find("integrator.dt"), std::string::npos) << r.error;
     EXPECT_TRUE(fs::is_empty(dir.path));
 }

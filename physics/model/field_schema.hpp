@@ -55,6 +55,8 @@ constexpr Bounds positive(double hi) { return {0.0, true, hi, false, false}; }
 constexpr Bounds non_negative(double hi) { return {0.0, false, hi, false, false}; }
 constexpr Bounds symmetric(double limit) { return {-limit, false, limit, false, false}; }
 constexpr Bounds closed(double lo, double hi) { return {lo, false, hi, false, true}; }
+// [lo, hi] with the one-sided messages ("must be >= lo", "must be <= hi").
+constexpr Bounds at_least(double lo, double hi) { return {lo, false, hi, false, false}; }
 // bounded_vec3: the largest length.
 constexpr Bounds max_length(double limit) { return {-inf, false, limit, false, false}; }
 

@@ -145,6 +145,12 @@ DurationPlan plan_duration(const Scene& scene, double duration_s) {
         const Model m = model_for_variant(scene, v);
         const double dt = m.integrator.dt;
         const double steps = duration_s / dt;
+        // Past 2^53 a double cannot tell whole numbers of steps apart (and 1e308 / 5e-324 is inf).
+        if (!(steps <= 9007199254740992.0)) {
+            plan.error = fmt::format("{} s is {:.3g} steps of dt = {} s{}, more than can be counted (2^53)", duration_s,
+                                     steps, dt, m.label.empty() ? "" : fmt::format(" (variant '{}')", m.label));
+            return plan;
+        }
         if (std::abs(steps - std::round(steps)) > 1e-9 * std::max(1.0, steps) || std::round(steps) < 1.0) {
             const double nearest = std::max(1.0, std::round(steps)) * dt;
             plan.error = fmt::format("{} s is not a whole number of steps of dt = {} s{}; the nearest is {} s",

@@ -16,4 +16,11 @@ std::optional<std::filesystem::path> user_config_dir() {
     return dir;
 }
 
+bool readable_settings_file(const std::filesystem::path& file, std::uintmax_t max_bytes) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec) || ec) return false;  // follows symlinks
+    const std::uintmax_t size = std::filesystem::file_size(file, ec);
+    return !ec && size <= max_bytes;
+}
+
 }  // namespace pl::app

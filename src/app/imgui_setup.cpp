@@ -1,5 +1,7 @@
 #include "app/imgui_setup.hpp"
 
+#include "app/config_dir.hpp"
+
 #include <glad/gl.h>
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -7,6 +9,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 
 namespace pl::app {
 
@@ -93,8 +97,14 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window, const std::optional<std::filesystem::
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
-    if (config_dir) {
-        ini_path_ = (*config_dir / "imgui.ini").string();
+    // imgui.ini is a few kB; one that is not a regular file of sane size (a FIFO hung start-up)
+    // is neither read nor overwritten: the layout is then simply not remembered.
+    constexpr std::uintmax_t max_ini_bytes = 1 << 20;
+    const auto ini = config_dir ? std::optional(*config_dir / "imgui.ini") : std::nullopt;
+    std::error_code ec;
+    if (ini && (!std::filesystem::exists(std::filesystem::symlink_status(*ini, ec)) ||
+                readable_settings_file(*ini, max_ini_bytes))) {
+        ini_path_ = ini->string();
         io.IniFilename = ini_path_.c_str();
     } else {
         io.IniFilename = nullptr;

@@ -1,5 +1,6 @@
 // particle-lab accuracy: work-precision table (error vs cost per method and step size).
 #include "cli/cli_support.hpp"
+#include "cli/resource_check.hpp"
 
 #include "physics/studies/accuracy_study.hpp"
 #include "io/csv_writer.hpp"
@@ -141,6 +142,12 @@ int accuracy(const AccuracyCliOptions& o) {
         }
         options.variant = *found;
     }
+    double steps = 0.0;  // over the --dt ladder; the default ladder is the preset's own dt and coarser
+    for (double dt : options.dts) steps += o.duration_s / dt;
+    if (const std::string refused = check_work("accuracy", {1, 1, steps}); !refused.empty()) {
+        print_error("accuracy", "--dt: " + refused);
+        return exit_bad_input;
+    }
     Progress progress("accuracy");
     options.progress = [&](double f) { progress.update(f); };
     const AccuracyReport r = run_accuracy_study(*scene, options);
@@ -176,7 +183,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
         ->capture_default_str()
         ->check(positive_number());
     cmd->add_option("--variant", o->variant, "variant label or index (default: the first)");
-    cmd->add_option("--particle", o->particle, "particle index")->capture_default_str();
+    cmd->add_option("--particle", o->particle, "particle index")->capture_default_str()->check(whole_number_at_least(0));
     cmd->add_flag("--dopri5-fixed", o->dopri5_fixed, "run dopri5 over the dt ladder at fixed step instead of over tolerances");
     auto* csv = cmd->add_flag("--csv", o->csv, "print CSV (full precision)");
     auto* json = cmd->add_flag("--json", o->json, "print JSON");

@@ -16,11 +16,22 @@ void print_error(const std::string& command, const std::string& message) {
     std::fprintf(stderr, "particle-lab %s: %s\n", command.c_str(), message.c_str());
 }
 
+namespace {
+std::size_t max_preset_bytes = max_preset_file_bytes;  // --max-preset-bytes of the running command
+}
+
+void add_max_preset_bytes_option(CLI::App& command) {
+    command.add_option("--max-preset-bytes", max_preset_bytes, "largest preset file read, in bytes")
+        ->capture_default_str()
+        ->check(positive_integer());
+}
+
 std::optional<Scene> load_scene(const std::string& command, const std::string& path) {
-    LoadResult r = load_preset(path);
+    LoadResult r = load_preset(path, max_preset_bytes);
     if (r.ok()) return std::move(r.scene);
     if (r.errors.size() == 1 && r.errors.front().path.empty()) {  // the file itself: missing, unreadable, ...
-        print_error(command, r.errors.front().message);
+        print_error(command, r.errors.front().message +
+                                 (r.over_size_limit ? "; raise it with --max-preset-bytes BYTES" : ""));
         return std::nullopt;
     }
     print_error(command, fmt::format("{}: not a valid preset ({} error{}):", path, r.errors.size(),
@@ -28,6 +39,24 @@ std::optional<Scene> load_scene(const std::string& command, const std::string& p
     const std::string text = r.error_text();
     std::fprintf(stderr, "%s%s", text.c_str(), !text.empty() && text.back() != '\n' ? "\n" : "");
     return std::nullopt;
+}
+
+std::string printable(const std::string& text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        // C0 controls, DEL, and the C1 controls U+0080..U+009F (UTF-8 0xC2 0x80..0x9F): a
+        // terminal would act on them (clear the screen, set the title) instead of showing them.
+        if (c < 0x20 || c == 0x7F) {
+            out += fmt::format("\\x{:02x}", c);
+        } else if (c == 0xC2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) < 0xA0 &&
+                   static_cast<unsigned char>(text[i + 1]) >= 0x80) {
+            out += fmt::format("\\u{:04x}", static_cast<unsigned char>(text[++i]));
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    return out;
 }
 
 std::string variant_name(const Scene& scene, std::size_t variant) {
@@ -102,17 +131,20 @@ CLI::Validator positive_number() {
         "NUMBER>0");
 }
 
-CLI::Validator positive_integer() {
+CLI::Validator whole_number_at_least(unsigned long long least) {
     return CLI::Validator(
-        [](std::string& text) -> std::string {
+        [least](std::string& text) -> std::string {
             unsigned long long v = 0;
+            // from_chars into an unsigned type refuses "-1" (strtoull would wrap it to 2^64 - 1).
             const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-            if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || v == 0)
-                return fmt::format("must be a whole number >= 1, got '{}'", text);
+            if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || v < least)
+                return fmt::format("must be a whole number >= {}, got '{}'", least, text);
             return "";
         },
-        "INTEGER>=1");
+        fmt::format("INTEGER>={}", least));
 }
+
+CLI::Validator positive_integer() { return whole_number_at_least(1); }
 
 std::optional<std::size_t> find_variant(const Scene& scene, const std::string& text) {
     for (std::size_t v = 0; v < variant_count(scene); ++v)

@@ -30,8 +30,14 @@ void add_bench_command(CLI::App& app, int& exit_code);
 // command name, and returns nothing (the caller exits with exit_bad_input).
 std::optional<Scene> load_scene(const std::string& command, const std::string& path);
 
+// Adds --max-preset-bytes (the file-size limit load_scene applies) to a command reading a preset.
+void add_max_preset_bytes_option(CLI::App& command);
+
 // Prints "particle-lab COMMAND: MESSAGE" to stderr.
 void print_error(const std::string& command, const std::string& message);
+
+// `text` safe to print on a terminal: control characters written as \x1b or \u009b.
+std::string printable(const std::string& text);
 
 // A variant's name for tables and CSV: its label, or its index when the scene has no variants
 // (or the label is empty).
@@ -66,6 +72,7 @@ std::string sig(const std::optional<double>& value, int digits = 4);  // "-" whe
 // Option checks with messages that state the rule ("must be a number > 0, got 'abc'").
 CLI::Validator positive_number();
 CLI::Validator positive_integer();
+CLI::Validator whole_number_at_least(unsigned long long least);
 
 // A variant given by label or by index; empty when there is none such.
 std::optional<std::size_t> find_variant(const Scene& scene, const std::string& label_or_index);

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -19,6 +20,19 @@ constexpr const char* description =
     "particle-lab: a lab for Newtonian particle experiments (gravity, air drag, wind, bouncing in a room).\n"
     "Without a command it opens the GUI:  particle-lab [PRESET]  (default presets/default.json).\n"
     "Commands run headless. Exit codes: 0 ok, 1 runtime failure, 2 bad input.";
+
+// A command whose report could not be written (a full disk, a closed pipe) has failed even if
+// its work succeeded: exit 1 with a message instead of 0.
+int stdout_written(int exit_code) {
+    std::cout.flush();
+    errno = 0;
+    const bool flushed = std::fflush(stdout) == 0 && std::cout.good();
+    if (flushed && std::ferror(stdout) == 0) return exit_code;
+    // The reason is known only when the final flush failed; an earlier failed write left no errno.
+    std::fprintf(stderr, "particle-lab: cannot write the standard output%s%s\n", errno != 0 ? ": " : "",
+                 errno != 0 ? std::strerror(errno) : "");
+    return exit_code == exit_ok ? exit_runtime_failure : exit_code;
+}
 
 }  // namespace
 
@@ -45,6 +59,8 @@ int run_command(int argc, char** argv) {
     add_stability_command(app, exit_code);
     add_advise_command(app, exit_code);
     add_bench_command(app, exit_code);
+    for (CLI::App* command : app.get_subcommands({}))
+        if (command->get_option_no_throw("PRESET") != nullptr) add_max_preset_bytes_option(*command);
     if (argc >= 2 && std::strcmp(argv[1], "help") == 0) {
         std::cout << app.help();
         return exit_ok;
@@ -64,7 +80,7 @@ int run_command(int argc, char** argv) {
         std::fprintf(stderr, "particle-lab: runtime failure: %s\n", e.what());
         return exit_runtime_failure;
     }
-    return exit_code;
+    return stdout_written(exit_code);
 }
 
 }  // namespace pl::cli

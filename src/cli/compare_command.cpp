@@ -1,5 +1,6 @@
 // particle-lab compare: one metrics row per variant, and the difference to a baseline variant.
 #include "cli/cli_support.hpp"
+#include "cli/resource_check.hpp"
 
 #include "io/metrics_json.hpp"
 #include "physics/studies/metrics.hpp"
@@ -63,6 +64,13 @@ int compare(const CompareCliOptions& o) {
         }
         baseline = *found;
     }
+    const DurationPlan plan = plan_duration(*scene, o.duration_s);
+    if (plan.error.empty())
+        if (const std::string refused = check_work("compare", {particles, variant_count(*scene), double(plan.base_steps)});
+            !refused.empty()) {
+            print_error("compare", refused);
+            return exit_bad_input;
+        }
     Progress progress("compare");
     CompareOptions options;
     options.duration_s = o.duration_s;
@@ -109,25 +117,26 @@ int compare(const CompareCliOptions& o) {
     }
 
     std::printf("%s: %g s, particle %zu of %zu (energy and 'all rest' over all particles); baseline '%s'\n\n",
-                scene->name.c_str(), c.duration_s, o.particle, particles, variant_name(*scene, baseline).c_str());
+                printable(scene->name).c_str(), c.duration_s, o.particle, particles,
+                printable(variant_name(*scene, baseline)).c_str());
     Table t;
     t.header = {"variant", "flight s", "apex m", "range@1st m", "final range m", "bounces", "rest s",
                 "all rest s", "drag J", "bounce J", "friction J", "cost ms/s"};
     for (std::size_t v = 0; v < c.variants.size(); ++v) {
         const VariantMetrics& m = c.variants[v];
         const ParticleMetrics& p = m.particles[o.particle];
-        t.rows.push_back({variant_name(*scene, v), sig(p.first_impact_time), sig(p.apex_height), sig(p.range_at_first_impact),
+        t.rows.push_back({printable(variant_name(*scene, v)), sig(p.first_impact_time), sig(p.apex_height), sig(p.range_at_first_impact),
                           sig(p.final_range), std::to_string(p.bounces), sig(p.time_to_rest), sig(m.all_at_rest_time),
                           sig(m.lost_drag), sig(m.lost_bounce), sig(m.lost_friction), sig(m.cost() * 1e3, 3)});
     }
     t.print();
-    std::printf("\ndifference to '%s' (variant - baseline)\n", variant_name(*scene, baseline).c_str());
+    std::printf("\ndifference to '%s' (variant - baseline)\n", printable(variant_name(*scene, baseline)).c_str());
     Table d;
     d.header = {"variant", "flight s", "apex m", "range@1st m", "final range m", "bounces", "rest s", "drag J",
                 "bounce J", "friction J", "cost ms/s"};
     for (std::size_t v = 0; v < c.variants.size(); ++v) {
         const MetricsDifference x = metrics_difference(c.variants[v], base, o.particle);
-        d.rows.push_back({variant_name(*scene, v), signed_sig(x.first_impact_time), signed_sig(x.apex_height),
+        d.rows.push_back({printable(variant_name(*scene, v)), signed_sig(x.first_impact_time), signed_sig(x.apex_height),
                           signed_sig(x.range_at_first_impact), signed_sig(x.final_range),
                           (x.bounces > 0 ? "+" : "") + std::to_string(x.bounces), signed_sig(x.time_to_rest),
                           signed_sig(x.lost_drag), signed_sig(x.lost_bounce), signed_sig(x.lost_friction),
@@ -155,7 +164,7 @@ void add_compare_command(CLI::App& app, int& exit_code) {
         ->check(positive_number());
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
     cmd->add_option("--baseline", o->baseline, "label of the baseline variant (default: the first)");
-    cmd->add_option("--particle", o->particle, "particle whose trajectory metrics are shown")->capture_default_str();
+    cmd->add_option("--particle", o->particle, "particle whose trajectory metrics are shown")->capture_default_str()->check(whole_number_at_least(0));
     cmd->callback([o, &exit_code] { exit_code = compare(*o); });
 }
 

@@ -1,6 +1,9 @@
 // particle-lab run: every variant in lockstep; trajectory and events CSV, or a summary.
 #include "cli/cli_support.hpp"
 
+#include "cli/interrupt.hpp"
+#include "cli/resource_check.hpp"
+#include "io/atomic_output.hpp"
 #include "io/csv_writer.hpp"
 #include "physics/stepping/energy.hpp"
 #include "physics/studies/metrics.hpp"
@@ -9,9 +12,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
-#include <fstream>
+#include <initializer_list>
 #include <memory>
+#include <optional>
 
 namespace pl::cli {
 
@@ -23,6 +28,20 @@ struct RunOptions {
     std::string out, events;
     std::uint64_t every = 1;
 };
+
+constexpr std::initializer_list<const char*> trajectory_header = {
+    "t", "variant", "particle", "x", "y", "z", "vx", "vy", "vz", "speed", "height", "kinetic_energy"};
+constexpr std::initializer_list<const char*> event_header = {"t",         "variant",  "particle", "wall",
+                                                             "speed_in", "speed_out", "kind"};
+
+// Base steps between event drains. A particle raises at most a few events per step (a bounce on
+// each of up to three walls at a corner, then rest, stop or lift); 8 per particle-step bounds
+// that, so half the simulation's pending-event cap is never reached between drains.
+std::uint64_t event_drain_interval(std::size_t particles) {
+    constexpr std::uint64_t max_events_per_particle_step = 8;
+    const std::uint64_t per_step = max_events_per_particle_step * std::max<std::uint64_t>(particles, 1);
+    return std::max<std::uint64_t>(1, Simulation::max_pending_events / 2 / per_step);
+}
 
 void write_state_rows(CsvWriter& csv, const Simulation& sim, const std::string& variant, double t) {
     const ParticleState& s = sim.state();
@@ -60,14 +79,14 @@ void print_warnings(const Simulation& sim, std::FILE* out, const std::string& pr
 }
 
 void print_summary(const Scene& scene, const std::vector<Simulation>& sims, const std::vector<std::array<std::uint64_t, 5>>& event_counts) {
-    std::printf("%s: %zu particle%s, %zu variant%s\n", scene.name.c_str(), sims.front().particle_count(),
+    std::printf("%s: %zu particle%s, %zu variant%s\n", printable(scene.name).c_str(), sims.front().particle_count(),
                 sims.front().particle_count() == 1 ? "" : "s", sims.size(), sims.size() == 1 ? "" : "s");
     for (std::size_t v = 0; v < sims.size(); ++v) {
         const Simulation& sim = sims[v];
         const Model& m = sim.model();
         const EnergyBreakdown e = total_energy(sim.state(), m.world.gravity, m.room);
         const auto& n = event_counts[v];
-        std::printf("\nvariant %s  (%s, dt = %s s, drag %s, wind %s)\n", variant_name(scene, v).c_str(),
+        std::printf("\nvariant %s  (%s, dt = %s s, drag %s, wind %s)\n", printable(variant_name(scene, v)).c_str(),
                     to_string(m.integrator.method), sig(m.integrator.dt, 6).c_str(), to_string(m.drag.model),
                     to_string(m.world.wind.kind));
         std::printf("  time %s s, %llu steps\n", sig(sim.time(), 10).c_str(), static_cast<unsigned long long>(sim.step_count()));
@@ -92,6 +111,32 @@ void print_summary(const Scene& scene, const std::vector<Simulation>& sims, cons
     }
 }
 
+// Opens `path` as a CSV output (through a temporary file) with its header row; empty when the
+// option is not given. Prints why it could not be opened.
+std::unique_ptr<AtomicOutput> open_csv(const std::string& option, const std::string& path,
+                                       std::initializer_list<const char*> header) {
+    if (path.empty()) return nullptr;
+    auto out = std::make_unique<AtomicOutput>(path);
+    if (!out->ok()) {
+        print_error("run", option + ": " + out->error());
+        return nullptr;
+    }
+    CsvWriter csv(out->stream());
+    for (const char* h : header) csv.field(h);
+    csv.end_row();
+    return out;
+}
+
+// An output that would overwrite the preset being read, or the other output, is refused.
+std::string output_conflict(const RunOptions& o) {
+    if (!o.out.empty() && same_file(o.out, o.preset)) return fmt::format("--out '{}' is the preset itself", o.out);
+    if (!o.events.empty() && same_file(o.events, o.preset))
+        return fmt::format("--events '{}' is the preset itself", o.events);
+    if (!o.out.empty() && !o.events.empty() && same_file(o.out, o.events))
+        return fmt::format("--out and --events name the same file '{}'", o.out);
+    return "";
+}
+
 int run(const RunOptions& o) {
     const std::optional<Scene> scene = load_scene("run", o.preset);
     if (!scene) return exit_bad_input;
@@ -100,29 +145,23 @@ int run(const RunOptions& o) {
         print_error("run", "--duration: " + plan.error);
         return exit_bad_input;
     }
-    std::ofstream traj_file, events_file;
-    std::unique_ptr<CsvWriter> traj, events;
-    if (!o.out.empty()) {
-        traj_file.open(o.out, std::ios::binary);
-        if (!traj_file) {
-            print_error("run", fmt::format("--out: cannot open '{}' for writing", o.out));
-            return exit_runtime_failure;
-        }
-        traj = std::make_unique<CsvWriter>(traj_file);
-        for (const char* h : {"t", "variant", "particle", "x", "y", "z", "vx", "vy", "vz", "speed", "height", "kinetic_energy"})
-            traj->field(h);
-        traj->end_row();
+    const std::uint64_t particle_count = scene->particles.size() + (scene->emitter ? scene->emitter->count : 0);
+    if (const std::string refused = check_work("run", {particle_count, variant_count(*scene), double(plan.base_steps)});
+        !refused.empty()) {
+        print_error("run", refused);
+        return exit_bad_input;
     }
-    if (!o.events.empty()) {
-        events_file.open(o.events, std::ios::binary);
-        if (!events_file) {
-            print_error("run", fmt::format("--events: cannot open '{}' for writing", o.events));
-            return exit_runtime_failure;
-        }
-        events = std::make_unique<CsvWriter>(events_file);
-        for (const char* h : {"t", "variant", "particle", "wall", "speed_in", "speed_out", "kind"}) events->field(h);
-        events->end_row();
+    if (const std::string conflict = output_conflict(o); !conflict.empty()) {
+        print_error("run", conflict);
+        return exit_bad_input;
     }
+    const InterruptGuard interrupt;
+    const std::unique_ptr<AtomicOutput> traj_file = open_csv("--out", o.out, trajectory_header);
+    const std::unique_ptr<AtomicOutput> events_file = open_csv("--events", o.events, event_header);
+    if ((!o.out.empty() && !traj_file) || (!o.events.empty() && !events_file)) return exit_runtime_failure;
+    std::optional<CsvWriter> traj, events;
+    if (traj_file) traj.emplace(traj_file->stream());
+    if (events_file) events.emplace(events_file->stream());
 
     const std::vector<ParticleSpec> particles = initial_particles(*scene);
     std::vector<Simulation> sims;
@@ -141,9 +180,18 @@ int run(const RunOptions& o) {
     // Every variant advances from one output point to the next in one step_n, which lets the
     // kernel take several steps per call (much faster for large scenes). Output points: every
     // K-th base step when writing CSV (K = --every), else every 256 for the progress line.
+    // Events are drained at least every `drain` steps, fewer than the simulation keeps pending
+    // (it drops beyond max_pending_events), so none is lost whatever K is. Splitting a step_n
+    // changes no result.
     const std::uint64_t stride = traj || events ? std::max<std::uint64_t>(o.every, 1) : 256;
-    for (std::uint64_t k = std::min(stride, plan.base_steps);; k = std::min(k + stride, plan.base_steps)) {
+    const std::uint64_t drain = std::min(stride, event_drain_interval(particles.size()));
+    // The next stop: a drain point or the next output point (a multiple of K), whichever is first.
+    const auto next_stop = [&](std::uint64_t k) {
+        return std::min({k + drain, (k / stride + 1) * stride, plan.base_steps});
+    };
+    for (std::uint64_t k = next_stop(0);; k = next_stop(k)) {
         const bool last = k == plan.base_steps;
+        const bool output_point = k % stride == 0 || last;
         for (std::size_t v = 0; v < sims.size(); ++v) {
             // A variant with a coarser dt is written at base step k only if one of its steps ends there.
             const std::uint64_t before_k = sims[v].steps_to(static_cast<double>(k - 1) * plan.base_dt);
@@ -152,30 +200,32 @@ int run(const RunOptions& o) {
             const std::vector<Event> new_events = sims[v].drain_events();
             for (const Event& e : new_events) ++event_counts[v][static_cast<std::size_t>(e.kind)];
             if (events) write_event_rows(*events, new_events, names[v]);
-            if (traj && (taken > before_k || last) && sims[v].step_count() != written_step[v]) {
+            if (traj && output_point && (taken > before_k || last) && sims[v].step_count() != written_step[v]) {
                 // The last state is at exactly t = duration (plan_duration checked every dt divides it).
                 write_state_rows(*traj, sims[v], names[v], last ? o.duration_s : sims[v].time());
                 written_step[v] = sims[v].step_count();
             }
         }
+        if (const int signal = InterruptGuard::received(); signal != 0) {
+            progress.done();
+            print_error("run", fmt::format("interrupted by {} at t = {} s; no output file was changed",
+                                           signal_name(signal), sig(sims.front().time(), 6)));
+            return 128 + signal;  // the AtomicOutputs remove their temporary files
+        }
         progress.update(static_cast<double>(k) / static_cast<double>(plan.base_steps));
         if (last) break;
     }
     progress.done();
-    if (traj_file.is_open()) {
-        traj_file.close();
-        if (!traj_file) {
-            print_error("run", fmt::format("--out: writing '{}' failed", o.out));
+    for (const Simulation& sim : sims)
+        if (sim.dropped_events() > 0) {  // a bug in the drain interval: never silently
+            print_error("run", fmt::format("{} events of variant '{}' were lost", sim.dropped_events(), sim.model().label));
             return exit_runtime_failure;
         }
-    }
-    if (events_file.is_open()) {
-        events_file.close();
-        if (!events_file) {
-            print_error("run", fmt::format("--events: writing '{}' failed", o.events));
+    for (const auto& [option, file] : {std::pair{"--out", traj_file.get()}, std::pair{"--events", events_file.get()}})
+        if (file && !file->commit()) {
+            print_error("run", fmt::format("{}: {}", option, file->error()));
             return exit_runtime_failure;
         }
-    }
     if (o.out.empty()) {
         print_summary(*scene, sims, event_counts);
     } else {

@@ -26,7 +26,7 @@ before=$(kept_scene)
 
 # 1. Negative mass: the dialog says which field and why; the scene stays and runs on.
 open_by_path "$BAD" "$STATE"
-wait_for_state "$STATE" '"particles[0].mass: must be > 0, got -1" in d["error_popup"]' \
+wait_for_state "$STATE" '"particles[0].mass: must be >= 1e-15, got -1" in d["error_popup"]' \
     "no error dialog naming particles[0].mass"
 json_check "$STATE" "\"$BAD\" in d['error_popup'] and 'current scene is kept' in d['error_popup']" \
     "the dialog does not name the file or say the scene is kept"

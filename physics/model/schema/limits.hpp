@@ -12,6 +12,9 @@ constexpr double max_room_size_m = 1e6;
 constexpr double max_speed_mps = 1e5;
 constexpr double max_gravity_mps2 = 1e4;
 constexpr double max_mass_kg = 1e6;
+// Lightest particle: about a 1 um dust grain (4e-15 kg). Lighter ones are Brownian, outside this
+// model, and a mass such as 5e-324 made the drag stiffness infinite (the particle froze).
+constexpr double min_mass_kg = 1e-15;
 constexpr double max_density_kg_m3 = 1e5;
 constexpr double max_viscosity_pa_s = 1e3;
 constexpr double max_cd = 100.0;

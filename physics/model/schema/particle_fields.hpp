@@ -11,7 +11,7 @@ inline constexpr Field<ParticleSpec> particle_rows[] = {
          "Centre of the sphere; it must lie a radius away from every wall.")
         .required(),
     bounded_vec3("velocity", &ParticleSpec::velocity, "m/s", max_speed_mps, "velocity", "Initial velocity."),
-    number("mass", &ParticleSpec::mass, "kg", positive(max_mass_kg), "mass", "0.057 kg: a tennis ball."),
+    number("mass", &ParticleSpec::mass, "kg", at_least(min_mass_kg, max_mass_kg), "mass", "0.057 kg: a tennis ball."),
     number("radius", &ParticleSpec::radius, "m", positive(max_room_size_m), "radius",
            "Less than half the room's smallest size."),
 };

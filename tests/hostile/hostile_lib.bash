@@ -1,0 +1,50 @@
+# Shared by tests/hostile/*.sh: bash SCRIPT PARTICLE_LAB SOURCE_DIR.
+# expect_exit drives particle-lab in a child with a memory bound (prlimit --as, the address
+# space: setrlimit RLIMIT_AS) and a time bound (timeout), then checks the exit code and that
+# stderr+stdout match a regular expression.
+set -euo pipefail
+app=$1
+src=$2
+gen="python3 $src/tests/hostile/gen.py"
+work=$(mktemp -d "${TMPDIR:-/tmp}/pl_hostile.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+fail() {
+  echo "FAIL: $*" >&2
+  failures=$((failures + 1))
+}
+
+# expect_exit NAME MEMORY_MB SECONDS EXIT_CODE REGEX -- COMMAND...
+expect_exit() {
+  local name=$1 mem=$2 seconds=$3 want=$4 pattern=$5
+  shift 6
+  local out=$work/$name.out start end code=0
+  start=$(date +%s.%N)
+  timeout --kill-after=2 "$seconds" prlimit --as=$((mem * 1024 * 1024)) -- "$@" >"$out" 2>&1 || code=$?
+  end=$(date +%s.%N)
+  local took
+  took=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }')
+  if [ "$code" -eq 124 ] || [ "$code" -eq 137 ]; then
+    fail "$name: still running after $seconds s (memory bound $mem MB)"
+    return
+  fi
+  if [ "$code" -ne "$want" ]; then
+    fail "$name: exit $code, expected $want; output:"
+    head -c 2000 "$out" >&2
+    return
+  fi
+  if ! grep -Eq -- "$pattern" "$out"; then
+    fail "$name: output does not match /$pattern/:"
+    head -c 2000 "$out" >&2
+    return
+  fi
+  echo "ok: $name (exit $code, ${took} s, under $mem MB)"
+}
+
+finish() {
+  if [ "$failures" -gt 0 ]; then
+    echo "$failures hostile case(s) failed" >&2
+    exit 1
+  fi
+}
