@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 
 #include "cli/cli_support.hpp"
+#include "cli/sweep_commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -13,7 +14,8 @@ namespace pl::cli {
 
 namespace {
 
-constexpr const char* commands[] = {"run", "validate", "schema", "compare", "accuracy", "stability", "advise", "bench"};
+constexpr const char* commands[] = {"run",    "validate", "schema", "compare", "accuracy",
+                                    "stability", "advise", "bench", "sweep", "sweep-merge"};
 
 constexpr const char* description =
     "particle-lab: a lab for Newtonian particle experiments (gravity, air drag, wind, bouncing in a room).\n"
@@ -45,6 +47,8 @@ int run_command(int argc, char** argv) {
     add_stability_command(app, exit_code);
     add_advise_command(app, exit_code);
     add_bench_command(app, exit_code);
+    add_sweep_command(app, exit_code);
+    add_sweep_merge_command(app, exit_code);
     if (argc >= 2 && std::strcmp(argv[1], "help") == 0) {
         std::cout << app.help();
         return exit_ok;
