@@ -166,15 +166,7 @@ int sweep(const SweepCliOptions& o) {
     options.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
     const SweepResults results = run_sweep(prepared, spec.duration_s, options);
     const std::string text = o.json ? sweep_json(header, spec, prepared, results) : sweep_csv(header, spec, prepared, results);
-    if (o.out.empty()) {
-        std::cout << text << std::flush;
-        return std::cout ? exit_ok : exit_runtime_failure;
-    }
-    if (std::string e = write_file_atomically(o.out, text); !e.empty()) {
-        print_error("sweep", e);
-        return exit_runtime_failure;
-    }
-    return exit_ok;
+    return write_sweep_output("sweep", o.out, text);
 }
 
 std::string metrics_footer() {
@@ -184,6 +176,20 @@ std::string metrics_footer() {
 }
 
 }  // namespace
+
+int write_sweep_output(const std::string& command, const std::string& out, const std::string& text) {
+    if (out.empty()) {
+        std::cout << text << std::flush;
+        if (std::cout) return exit_ok;
+        print_error(command, "writing to stdout failed");
+        return exit_runtime_failure;
+    }
+    if (std::string e = write_file_atomically(out, text); !e.empty()) {
+        print_error(command, e);
+        return exit_runtime_failure;
+    }
+    return exit_ok;
+}
 
 void add_sweep_command(CLI::App& app, int& exit_code) {
     auto o = std::make_shared<SweepCliOptions>();

@@ -6,7 +6,6 @@
 
 #include "io/sweep_table.hpp"
 
-#include <iostream>
 #include <memory>
 
 namespace pl::cli {
@@ -35,15 +34,7 @@ int sweep_merge(const MergeCliOptions& o) {
         print_error("sweep-merge", error);
         return exit_bad_input;
     }
-    if (o.out.empty()) {
-        std::cout << text << std::flush;
-        return std::cout ? exit_ok : exit_runtime_failure;
-    }
-    if (std::string e = write_file_atomically(o.out, text); !e.empty()) {
-        print_error("sweep-merge", e);
-        return exit_runtime_failure;
-    }
-    return exit_ok;
+    return write_sweep_output("sweep-merge", o.out, text);
 }
 
 }  // namespace

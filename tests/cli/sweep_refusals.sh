@@ -52,4 +52,8 @@ grep -q "running it again" resume.txt
 "$bin" sweep-merge s0.csv s1.csv > /dev/null
 # ... and another sweep's file is not overwritten.
 expect_refusal "holds shard 1/2 of sweep" "$bin" sweep "$preset" "${axes[@]}" --shard 1/2 --out other1.csv --resume
+# A failed write is a runtime failure (exit 1) that says why.
+rc=0
+"$bin" sweep "$preset" "${axes[@]}" --out "$tmp/no/such/dir/out.csv" 2> err.txt || rc=$?
+[ "$rc" -eq 1 ] && grep -q "cannot write" err.txt || { echo "expected exit 1, got $rc"; cat err.txt; exit 1; }
 echo ok
