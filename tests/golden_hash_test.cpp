@@ -141,6 +141,7 @@ const Case preset_cases[] = {
     {"integrators.json", 5, 2500, 0x920f55b49777b5f2ull},
     {"launch_velocities.json", 0, 2500, 0x42eced51bcaeb8f5ull},
     {"many_particles.json", 0, 500, 0xbade06faa47c8bc6ull},
+    {"optimal_angle.json", 0, 2500, 0x2cac261951c0305eull},
     {"restitution.json", 0, 2500, 0xa6abca908c24ebafull},
     {"restitution.json", 1, 2500, 0x677923342be4ec2full},
     {"restitution.json", 2, 2500, 0xe0a8d6a32b3b9075ull},

@@ -54,6 +54,7 @@ void observe_step(MetricsTracker& m, const Simulation& sim, const std::vector<Ev
         if (is_impact(e) && !p.first_impact_time) {
             p.first_impact_time = e.t;
             p.first_impact_wall = e.wall;
+            p.first_impact_speed = e.speed_in;
             const Vec3 at = m.prev_position[e.particle] + (e.t - m.prev_time) * m.prev_velocity[e.particle];
             p.range_at_first_impact = horizontal_distance(at, m.start_position[e.particle]);
         }
@@ -178,7 +179,7 @@ Comparison run_comparison(const Scene& scene, const CompareOptions& options) {
     for (std::size_t v = 0; v < variant_count(scene); ++v) {
         sims.emplace_back(model_for_variant(scene, v), particles);
         // An explicit count (same results as 0 = all) spares a hardware query on every step.
-        sims.back().set_threads(hardware_threads());
+        sims.back().set_threads(options.threads > 0 ? options.threads : hardware_threads());
         trackers.push_back(start_metrics(sims.back()));
     }
     using clock = std::chrono::steady_clock;

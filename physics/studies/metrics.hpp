@@ -24,6 +24,7 @@ struct ParticleMetrics {
     // Time of flight: time of the first impact (a bounce or rest event on any wall).
     std::optional<double> first_impact_time;
     int first_impact_wall = -1;
+    std::optional<double> first_impact_speed;  // |v| just before the first impact, m/s
     // Horizontal distance from the start to the first impact point. The impact lies inside a
     // step; its horizontal position is the state before that step extrapolated linearly to the
     // impact time (horizontal acceleration is drag/wind only, so the error is below
@@ -102,6 +103,9 @@ struct CompareOptions {
     double duration_s = 5.0;
     std::function<void(double fraction)> progress;  // called from the running thread
     const std::atomic<bool>* cancel = nullptr;      // set to stop early (result.cancelled)
+    // Threads each variant's simulation uses; 0: all hardware threads. Studies that run many
+    // scenes at once (sweep) give 1 and run a scene per core instead.
+    int threads = 0;
 };
 
 struct Comparison {

@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 
 #include "cli/cli_support.hpp"
+#include "cli/sweep_commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -14,7 +15,8 @@ namespace pl::cli {
 
 namespace {
 
-constexpr const char* commands[] = {"run", "validate", "schema", "compare", "accuracy", "stability", "advise", "bench"};
+constexpr const char* commands[] = {"run",    "validate", "schema", "compare", "accuracy",
+                                    "stability", "advise", "bench", "sweep", "sweep-merge"};
 
 constexpr const char* description =
     "particle-lab: a lab for Newtonian particle experiments (gravity, air drag, wind, bouncing in a room).\n"
@@ -59,6 +61,8 @@ int run_command(int argc, char** argv) {
     add_stability_command(app, exit_code);
     add_advise_command(app, exit_code);
     add_bench_command(app, exit_code);
+    add_sweep_command(app, exit_code);
+    add_sweep_merge_command(app, exit_code);
     for (CLI::App* command : app.get_subcommands({}))
         if (command->get_option_no_throw("PRESET") != nullptr) add_max_preset_bytes_option(*command);
     if (argc >= 2 && std::strcmp(argv[1], "help") == 0) {

@@ -1,4 +1,5 @@
-// Headless command line: run, validate, compare, accuracy, stability, advise, bench.
+// Headless command line: run, validate, compare, accuracy, stability, advise, bench, sweep,
+// sweep-merge.
 // Exit codes: 0 ok, 1 runtime failure, 2 bad input.
 #pragma once
 
