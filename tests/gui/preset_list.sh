@@ -21,7 +21,11 @@ dump_now "$STATE"
 json_check "$STATE" 'd["preset"].endswith("default.json")' "a single click on $ONCE loaded it"
 
 read -r x y < <(widget_center "$STATE" "preset.$TWICE")
-xdotool mousemove --window "$APP_WINDOW" "$x" "$y" click --repeat 2 --delay 90 1
+# Dear ImGui 1.86 reads the mouse once per frame (no input queue): two clicks inside one frame
+# are one click. 150 ms apart they fall in different frames unless a frame takes that long, and
+# stay within ImGui's 0.30 s double-click time unless a frame takes twice that (a loaded machine
+# took longer than 90 ms per frame, and the double-click was lost).
+xdotool mousemove --window "$APP_WINDOW" "$x" "$y" click --repeat 2 --delay 150 1
 wait_for_state "$STATE" "d['preset'].endswith('$TWICE.json')" "a double-click on $TWICE did not load it"
 json_check "$STATE" 'not d["dirty"] and d["error_popup"] == "" and d["t"] < 0.5' \
     "the loaded preset is dirty, shows an error or did not start from t = 0"
