@@ -4,6 +4,7 @@
 #include "ui/lab_ui.hpp"
 #include "ui/palette.hpp"
 #include "ui/panel_state.hpp"
+#include "ui/pinned_runs.hpp"
 #include "ui/plot.hpp"
 #include "ui/sections.hpp"
 
@@ -48,6 +49,24 @@ const SampleSeries& particle_series(const ParticleTrack& t, Quantity q) {
     return q == Quantity::height ? t.height : q == Quantity::speed ? t.speed : t.kinetic;
 }
 
+// Pinned runs, faded and thinner, under their own labels: the selected particle's curves (the
+// aggregates' means in a scene of many particles).
+void add_pinned_lines(const LabSession& s, std::size_t particle, MotionSeries& out) {
+    const PinBoard* board = pins_if_any(s);
+    if (!board) return;
+    for (const PinnedRun& run : board->runs) {
+        const Rgba c = pin_color(run.number);
+        if (out.aggregated) {
+            out.lines[0].push_back({run.label, &run.aggregate.height_mean, c, 1.2f});
+            out.lines[1].push_back({run.label, &run.aggregate.speed_mean, c, 1.2f});
+            out.lines[2].push_back({run.label, &run.aggregate.kinetic_total, c, 1.2f});
+        } else if (particle < run.particles.size()) {
+            for (int q = 0; q < 3; ++q)
+                out.lines[q].push_back({run.label, &particle_series(run.particles[particle], static_cast<Quantity>(q)), c, 1.2f});
+        }
+    }
+}
+
 // Which lines the motion plots show: per variant (the selected particle) when there are several
 // variants, else per particle; aggregates when there are too many particles to draw one by one.
 MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
@@ -74,6 +93,7 @@ MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
             out.lines[1].push_back({name + "##max", &a.speed_max, faint, 1.0f});
             out.lines[2].push_back({name, &a.kinetic_total, c, 2.0f});
         }
+        add_pinned_lines(s, sel, out);
         return out;
     }
     std::vector<int> mark_index;  // (variant, particle) -> index into out.marks
@@ -103,6 +123,7 @@ MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
             if (e.event.particle < out.marks.size() && (e.event.kind == EventKind::bounce || e.event.kind == EventKind::rest))
                 out.marks[e.event.particle].times.push_back(e.event.t);
     }
+    add_pinned_lines(s, sel, out);
     return out;
 }
 

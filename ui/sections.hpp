@@ -7,6 +7,8 @@ namespace pl::ui {
 
 // Control panel
 void draw_preset_section(LabSession& s);
+void draw_about_section(LabSession& s);  // the preset's description, in full
+void draw_runs_section(LabSession& s);   // pin the run, list and unpin pinned runs
 void draw_time_section(LabSession& s);
 void draw_launch_section(LabSession& s);
 void draw_scene_section(LabSession& s);

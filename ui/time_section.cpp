@@ -49,8 +49,10 @@ void draw_time_section(LabSession& s) {
     if (ImGui::SmallButton("1x")) s.time_scale = 1.0;
 
     SceneEditor ed(s);
+    const ImVec2 dt_field = ImGui::GetCursorScreenPos();  // for the GUI tests (the help mark follows it)
     ed.number("dt (s)", s.scene.integrator.dt, [](Scene& sc, double v) { sc.integrator.dt = v; }, "%.6g",
               "The scene's fixed step (variants may override it). Changing it restarts the run.");
+    s.widget_rects["time.dt"] = {dt_field.x, dt_field.y, ImGui::CalcItemWidth(), ImGui::GetFrameHeight()};
 }
 
 void draw_launch_section(LabSession& s) {

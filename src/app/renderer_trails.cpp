@@ -29,4 +29,14 @@ void append_trails(const TrailHistory& history, const Experiment& e, std::option
     }
 }
 
+void append_pinned_paths(const ui::PinBoard& board, LineSegments& out) {
+    for (const ui::PinnedRun& run : board.runs) {
+        const ui::Rgba c = ui::pin_color(run.number, 0.5f);
+        const glm::vec4 colour(c[0], c[1], c[2], c[3]);
+        for (const ui::PathSeries& path : run.paths)
+            for (std::size_t k = 0; k + 1 < path.size(); ++k)
+                add_segment(out, glm::vec3(path.position(k)), glm::vec3(path.position(k + 1)), colour, colour);
+    }
+}
+
 }  // namespace pl::app

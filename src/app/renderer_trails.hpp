@@ -4,6 +4,7 @@
 #include "app/renderer_lines.hpp"
 #include "app/trail_history.hpp"
 #include "ui/palette.hpp"
+#include "ui/pinned_runs.hpp"
 
 #include <optional>
 
@@ -13,5 +14,8 @@ namespace pl::app {
 // than the first few are drawn only while they are selected.
 void append_trails(const TrailHistory& history, const Experiment& experiment, std::optional<std::size_t> only_variant,
                    std::size_t selected_particle, LineSegments& out);
+
+// Appends the pinned runs' paths: faint lines in each pin's colour (the ghosts of earlier runs).
+void append_pinned_paths(const ui::PinBoard& board, LineSegments& out);
 
 }  // namespace pl::app

@@ -84,6 +84,11 @@ void SceneRenderer::draw_pane(const ui::LabSession& session, const TrailHistory&
         append_trails(trails, e, pane.variant, static_cast<std::size_t>(std::max(session.selected_particle, 0)), segments_);
         lines_.draw(segments_, cam.view_proj, viewport, 2.0f);
     }
+    if (const ui::PinBoard* pins = ui::pins_if_any(session); pins && !pins->runs.empty()) {
+        segments_.clear();
+        append_pinned_paths(*pins, segments_);
+        lines_.draw(segments_, cam.view_proj, viewport, 1.5f);
+    }
     if (session.show_velocity) {
         segments_.clear();
         append_velocity_arrows(e, pane.variant, view_dir, segments_);

@@ -2,6 +2,7 @@
 
 #include "app/picking.hpp"
 #include "io/metrics_json.hpp"
+#include "ui/pinned_runs.hpp"
 #include "ui/plot_history.hpp"
 
 #include <imgui.h>
@@ -126,6 +127,19 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
         }
     }
     j["live_metrics"] = live;
+    // Pinned runs, oldest first, with the metrics of the selected particle (null without).
+    nlohmann::json pinned = nlohmann::json::array();
+    if (const ui::PinBoard* board = ui::pins_if_any(s))
+        for (const ui::PinnedRun& run : board->runs) {
+            nlohmann::json metrics = nullptr;
+            if (run.metrics && selected < run.metrics->particles.size())
+                metrics = cli::particle_metrics_json(run.metrics->particles[selected]);
+            nlohmann::json paths = nlohmann::json::array();
+            for (const ui::PathSeries& path : run.paths) paths.push_back(path.size());
+            pinned.push_back({{"number", run.number}, {"label", run.label}, {"t_end", run.t_end}, {"metrics", metrics},
+                              {"path_samples", paths}});
+        }
+    j["pinned_runs"] = pinned;
     j["t"] = s.experiment ? s.experiment->time() : 0.0;
     j["base_steps"] = s.experiment ? s.experiment->base_steps() : 0;
     nlohmann::json variants = nlohmann::json::array();
