@@ -108,5 +108,39 @@ TEST(DecimateM4, NonFiniteSamplesBreakTheLine) {
     EXPECT_TRUE(std::isnan(out[1].y));
 }
 
+TEST(ConstantRange, ConstantDataSpansZeroToTheValue) {
+    double lo = 0.033, hi = 0.033;  // a ball at rest on the floor
+    constant_range(lo, hi);
+    EXPECT_EQ(lo, 0.0);
+    EXPECT_EQ(hi, 0.033);
+    const Ticks ticks = nice_ticks(lo, hi, 5);
+    ASSERT_GE(ticks.values.size(), 3u);
+    for (std::size_t i = 1; i < ticks.values.size(); ++i)  // distinct labels, none of them "3.3e-02" five times
+        EXPECT_NE(format_tick(ticks.values[i], ticks.step), format_tick(ticks.values[i - 1], ticks.step));
+    lo = hi = 0.0;  // at rest: speed exactly 0
+    constant_range(lo, hi);
+    EXPECT_EQ(lo, -1.0);
+    EXPECT_EQ(hi, 1.0);
+    lo = hi = -2.0;
+    constant_range(lo, hi);
+    EXPECT_EQ(lo, -2.0);
+    EXPECT_EQ(hi, 0.0);
+    lo = 1.0, hi = 1.0 + 1e-12;  // varying data, however little, is shown as it is
+    constant_range(lo, hi);
+    EXPECT_EQ(hi, 1.0 + 1e-12);
+}
+
+TEST(Coincide, LinesWithinAPixelAtTheSameTimesCoincide) {
+    const std::vector<PlotPoint> a{{0.0, 1.0}, {1.0, 2.0}, {2.0, std::nan("")}};
+    std::vector<PlotPoint> b{{0.0, 1.0004}, {1.0, 2.0}, {2.0, std::nan("")}};
+    EXPECT_TRUE(coincide(a, b, 1e-3));
+    b[0].y = 1.01;
+    EXPECT_FALSE(coincide(a, b, 1e-3));
+    b[0].y = 1.0;
+    b[2].y = 3.0;  // a gap in one line only
+    EXPECT_FALSE(coincide(a, b, 1e-3));
+    EXPECT_FALSE(coincide(a, std::vector<PlotPoint>{{0.0, 1.0}}, 1e-3));
+}
+
 }  // namespace
 }  // namespace pl::ui

@@ -83,6 +83,34 @@ inline std::string format_tick(double value, double step) {
     return buf;
 }
 
+// The y range of data that never changes (lo == hi): the span from zero to the value, so a ball
+// at rest at 0.033 m reads "0 .. 0.04" and not five labels of 0.033, and an exact zero gets
+// [-1, 1] rather than +-1e-9 of rounding noise. Varying data (lo < hi) is left as it is.
+inline void constant_range(double& lo, double& hi) {
+    if (!(lo == hi) || !std::isfinite(lo)) return;
+    if (lo == 0.0) {
+        lo = -1.0;
+        hi = 1.0;
+        return;
+    }
+    const double v = lo;
+    lo = std::min(0.0, v);
+    hi = std::max(0.0, v);
+}
+
+// Whether two decimated lines draw the same pixels: the same sample times, and values within
+// `tolerance` (data units of one pixel) at every one (NaN gaps at the same places).
+template <class Point>
+bool coincide(const std::vector<Point>& a, const std::vector<Point>& b, double tolerance) {
+    if (a.size() != b.size() || a.empty()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].x != b[i].x) return false;
+        const bool gap_a = !std::isfinite(a[i].y), gap_b = !std::isfinite(b[i].y);
+        if (gap_a != gap_b || (!gap_a && std::abs(a[i].y - b[i].y) > tolerance)) return false;
+    }
+    return true;
+}
+
 struct PlotPoint {
     double x, y;  // y is NaN at a gap (a non-finite sample): the line breaks there
 };
