@@ -5,6 +5,7 @@
 #include "ui/panel_state.hpp"
 #include "ui/pinned_runs.hpp"
 #include "ui/sections.hpp"
+#include "ui/warning_risk.hpp"
 
 #include <imgui.h>
 
@@ -32,12 +33,20 @@ void note_item_rect(LabSession& s, const std::string& name) {
     s.widget_rects[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
 }
 
-std::size_t warning_count(const LabSession& s) {
+namespace {
+
+std::size_t count_warnings(const LabSession& s, bool at_risk) {
     std::size_t n = 0;
     if (s.experiment)
-        for (const Simulation& sim : s.experiment->runs()) n += sim.warnings().size();
+        for (const Simulation& sim : s.experiment->runs())
+            for (const Warning& w : sim.warnings()) n += puts_number_at_risk(w, sim) == at_risk;
     return n;
 }
+
+}  // namespace
+
+std::size_t warning_count(const LabSession& s) { return count_warnings(s, true); }
+std::size_t note_count(const LabSession& s) { return count_warnings(s, false); }
 
 void draw_control_panel(LabSession& s) {
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);

@@ -4,6 +4,8 @@
 #include "io/metrics_json.hpp"
 #include "ui/pinned_runs.hpp"
 #include "ui/plot_history.hpp"
+#include "ui/sections.hpp"
+#include "ui/warning_risk.hpp"
 
 #include <imgui.h>
 #include <nlohmann/json.hpp>
@@ -106,14 +108,17 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     nlohmann::json widgets = nlohmann::json::object();
     for (const auto& [name, r] : s.widget_rects) widgets[name] = {r[0], r[1], r[2], r[3]};
     j["widgets"] = widgets;
-    nlohmann::json warnings = nlohmann::json::array();  // the first few, in the Warnings tab's order
+    nlohmann::json warnings = nlohmann::json::array();  // the first few at risk, in the Warnings tab's order
     if (s.experiment)
         for (std::size_t v = 0; v < s.experiment->variant_count() && warnings.size() < 8; ++v)
             for (const Warning& w : s.experiment->run(v).warnings()) {
                 if (warnings.size() == 8) break;
-                warnings.push_back({{"variant", v}, {"particle", w.particle}});
+                if (ui::puts_number_at_risk(w, s.experiment->run(v)))
+                    warnings.push_back({{"variant", v}, {"particle", w.particle}});
             }
     j["warnings"] = warnings;
+    j["warning_count"] = ui::warning_count(s);  // at risk; notes: out of range, error negligible
+    j["note_count"] = ui::note_count(s);
     // The Compare tab's live metrics of the selected particle, one object per variant (null
     // without live metrics), named as `particle-lab compare --json` names them.
     nlohmann::json live = nullptr;
