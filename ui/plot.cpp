@@ -117,6 +117,10 @@ void PlotLine(const char* label, const SampleSeries& series, const Rgba& color, 
     PlotLine(label, series.times(), series.values(), static_cast<int>(series.size()), color, thickness);
 }
 
+void SetItemDetail(std::function<std::string(double x)> detail) {
+    if (!context().items.empty()) context().items.back().detail = std::move(detail);
+}
+
 void PlotMarkers(const char* label, const double* xs, const double* ys, int count, const Rgba& color, Marker shape,
                  float size) {
     Item item;

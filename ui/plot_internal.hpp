@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <set>
 #include <string>
@@ -44,6 +45,7 @@ struct Item {
     std::string coincides_with;
     int dash_style = 0;
     int zeros_on_log = 0;  // samples <= 0 in a log plot: marked on the x axis, not dropped
+    std::function<std::string(double)> detail;  // SetItemDetail: extra readout lines
 };
 
 // What a plot remembers between frames (keyed by its id, like ImPlot's context).
