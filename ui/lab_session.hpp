@@ -69,6 +69,7 @@ struct LabSession {
 
     // 3D view options (the shell's view toolbar edits them; panels may too).
     bool show_trails = true;
+    int trail_particles = 16;                  // trails (and drop lines) for the first N particles of each variant
     bool show_velocity = false;                // velocity arrows on the particles
     bool show_wind = false;                    // wind field arrows on a grid
     bool split_view = false;                   // one viewport per variant (up to 4) instead of overlaid

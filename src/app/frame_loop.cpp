@@ -146,7 +146,8 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
     // After each group of base steps: trails, and the live metrics, which need every step.
     const AfterSteps after_steps = [&]() -> std::uint64_t {
         if (!session.experiment) return 1;
-        trails.sample(*session.experiment, static_cast<std::size_t>(std::max(session.selected_particle, 0)));
+        trails.sample(*session.experiment, static_cast<std::size_t>(std::max(session.selected_particle, 0)),
+                      static_cast<std::size_t>(std::max(session.trail_particles, 0)));
         return std::min(ui::record_step(session), trails.steps_until_due(*session.experiment));
     };
     PanelCollapse collapsed;

@@ -1,9 +1,11 @@
 #include "app/view_toolbar.hpp"
 
 #include "app/renderer_arrows.hpp"
+#include "app/trail_history.hpp"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace pl::app {
@@ -49,6 +51,14 @@ ViewCommand draw_view_toolbar(ui::LabSession& s) {
     ViewCommand cmd;
     char tip[256];
     toggle_button("Trails", s.show_trails, "Fading trails of the first particles of each variant and the selected one");
+    ImGui::SameLine(0.0f, 2.0f);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 2.6f);
+    if (ImGui::DragInt("##trail_particles", &s.trail_particles, 0.2f, 0, static_cast<int>(TrailHistory::max_per_variant), "%d",
+                       ImGuiSliderFlags_AlwaysClamp))
+        s.trail_particles = std::clamp(s.trail_particles, 0, static_cast<int>(TrailHistory::max_per_variant));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Particles of each variant with a trail and a drop line to the floor (drag or double-click to\n"
+                          "type; the selected particle always has them)");
     ImGui::SameLine();
     const Room room = s.experiment ? s.experiment->scene().room : Room{};
     std::snprintf(tip, sizeof tip, "Velocity arrows: each shows the distance covered in %.2g s", velocity_arrow_time_s(room));
