@@ -72,7 +72,8 @@ struct LabSession {
     int trail_particles = 16;                  // trails (and drop lines) for the first N particles of each variant
     bool show_velocity = false;                // velocity arrows on the particles
     bool show_wind = false;                    // wind field arrows on a grid
-    bool split_view = false;                   // one viewport per variant (up to 4) instead of overlaid
+    bool split_view = false;                   // one viewport per variant (up to 9) instead of overlaid
+    std::vector<int> split_variants;           // the variants the split view shows (empty: the first 9)
     // Popups the shell toggles from keys and window events; draw_popups shows them.
     bool show_help = false;                    // F1/H toggle, Esc closes
     bool confirm_quit = false;                 // window closed with unsaved changes: ask, then set requests.quit

@@ -191,8 +191,9 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         // Panels, then the 3D view's overlays and input (the view is the space between panels).
         const ShellLayout layout = compute_layout(io.DisplaySize.x, io.DisplaySize.y, collapsed, layout_metrics());
         apply_view_command(draw_shell_windows(session, layout, collapsed), view, session);
-        const std::vector<ViewPane> panes =
-            view_panes(layout.view, session.split_view, session.experiment ? session.experiment->variant_count() : 1);
+        const std::size_t variant_count = session.experiment ? session.experiment->variant_count() : 1;
+        const std::vector<ViewPane> panes = view_panes(layout.view, session.split_view, variant_count,
+                                                       split_variants(session.split_variants, variant_count));
         const std::optional<HoveredParticle> hovered = handle_view_mouse(drag, view.camera, panes, session);
         draw_view_overlay(session, panes, view.camera, hovered);
         draw_launch_aim(drag.aim, session, panes, view.camera);

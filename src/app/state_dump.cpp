@@ -93,7 +93,11 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     j["text_input"] = ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantTextInput;
     const OrbitCamera& c = view.camera;
     nlohmann::json panes = nlohmann::json::array();
-    for (const ViewPane& p : view.panes) panes.push_back({p.rect.x, p.rect.y, p.rect.w, p.rect.h});
+    nlohmann::json pane_variants = nlohmann::json::array();  // null: a pane of every variant overlaid
+    for (const ViewPane& p : view.panes) {
+        panes.push_back({p.rect.x, p.rect.y, p.rect.w, p.rect.h});
+        pane_variants.push_back(p.variant ? nlohmann::json(*p.variant) : nlohmann::json(nullptr));
+    }
     j["view"] = {{"trails", s.show_trails},
                  {"velocity", s.show_velocity},
                  {"wind", s.show_wind},
@@ -104,6 +108,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
                  {"right", vec3(Vec3(camera_right(c)))},
                  {"up", vec3(Vec3(camera_up(c)))},
                  {"panes", panes},
+                 {"pane_variants", pane_variants},
                  {"aim", aim_json(s, view)}};
     nlohmann::json widgets = nlohmann::json::object();
     for (const auto& [name, r] : s.widget_rects) widgets[name] = {r[0], r[1], r[2], r[3]};
