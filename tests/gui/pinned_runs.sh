@@ -10,9 +10,7 @@ make_workdir
 STATE="$WORK/state.json"
 
 set_dt() {
-    local x y
-    read -r x y < <(widget_center "$STATE" "time.dt")
-    xdotool mousemove --window "$APP_WINDOW" "$x" "$y" click 1
+    click_widget "$STATE" time.dt
     wait_for_state "$STATE" 'd["text_input"]' "a click on the dt field did not put the keyboard in it"
     xdotool key ctrl+a
     xdotool type --delay 4 "$1"
