@@ -130,16 +130,16 @@ TEST(ConstantRange, ConstantDataSpansZeroToTheValue) {
     EXPECT_EQ(hi, 1.0 + 1e-12);
 }
 
-TEST(Coincide, LinesWithinAPixelAtTheSameTimesCoincide) {
-    const std::vector<PlotPoint> a{{0.0, 1.0}, {1.0, 2.0}, {2.0, std::nan("")}};
-    std::vector<PlotPoint> b{{0.0, 1.0004}, {1.0, 2.0}, {2.0, std::nan("")}};
-    EXPECT_TRUE(coincide(a, b, 1e-3));
-    b[0].y = 1.01;
-    EXPECT_FALSE(coincide(a, b, 1e-3));
-    b[0].y = 1.0;
-    b[2].y = 3.0;  // a gap in one line only
-    EXPECT_FALSE(coincide(a, b, 1e-3));
-    EXPECT_FALSE(coincide(a, std::vector<PlotPoint>{{0.0, 1.0}}, 1e-3));
+TEST(Coincide, LinesWithinAPixelCoincideWhateverTheirSampleTimes) {
+    const std::vector<PlotPoint> a{{0.0, 1.0}, {1.0, 2.0}, {2.0, 3.0}};
+    std::vector<PlotPoint> b{{0.0, 1.0004}, {0.5, 1.5}, {2.0, 3.0}};  // other times, same line
+    EXPECT_TRUE(coincide(a, b, 1e-3, 0.0));
+    b[1].y = 1.6;
+    EXPECT_FALSE(coincide(a, b, 1e-3, 0.0));
+    EXPECT_TRUE(coincide(a, b, 1e-3, 0.34));  // one point of three off: allowed at a third
+    b[1].y = std::nan("");  // a gap in b only
+    EXPECT_FALSE(coincide(a, b, 1e-3, 0.0));
+    EXPECT_FALSE(coincide(a, std::vector<PlotPoint>{{3.0, 4.0}}, 1e-3, 0.0));  // beyond a's span
 }
 
 }  // namespace

@@ -304,7 +304,8 @@ PlotResult EndPlot() {
     double x0 = 0.0, x1 = 1.0, y0 = 0.0, y1 = 1.0;
     x_range(c, fit_all, log, x0, x1);
     y_range(c, fit_all, x0, x1, y0, y1);
-    mark_coincident(c.items, (y1 - y0) / std::max(1.0f, c.frame_size.y));
+    // Within a line's width (1.5 px) a curve is hidden under the one drawn over it.
+    mark_coincident(c.items, 1.5 * (y1 - y0) / std::max(1.0f, c.frame_size.y));
     std::vector<LegendEntry> entries = legend_entries(c);
     AxisTicks yt;
     const PlotLayout l = layout(c, entries, x0, x1, y0, y1, log, style.line_h, yt);
