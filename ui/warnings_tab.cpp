@@ -25,6 +25,40 @@ const char* kind_name(WarningKind k) {
 }
 constexpr std::size_t kind_count = static_cast<std::size_t>(WarningKind::mach) + 1;
 
+struct Row {
+    std::size_t variant;
+    const Warning* warning;
+    bool at_risk;
+};
+
+// Rows in variant and time order, warnings at risk before notes, counted per kind.
+std::vector<Row> warning_rows(const Experiment& e, std::size_t (&per_kind)[kind_count], std::size_t& notes) {
+    std::vector<Row> rows;
+    for (std::size_t v = 0; v < e.variant_count(); ++v)
+        for (const Warning& w : e.run(v).warnings()) {
+            const bool at_risk = puts_number_at_risk(w, e.run(v));
+            rows.push_back({v, &w, at_risk});
+            if (at_risk) ++per_kind[static_cast<std::size_t>(w.kind)];
+            else ++notes;
+        }
+    std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.at_risk; });
+    return rows;
+}
+
+// In a scene of thousands of particles, a line per kind first says how many particles share a
+// warning, which a scroll through the table cannot.
+std::string summary_line(const std::size_t (&per_kind)[kind_count], std::size_t notes) {
+    std::string summary;
+    for (std::size_t k = 0; k < kind_count; ++k) {
+        if (per_kind[k] == 0) continue;
+        if (!summary.empty()) summary += "   ";
+        summary += std::string(kind_name(static_cast<WarningKind>(k))) + ": " + std::to_string(per_kind[k]) +
+                   (per_kind[k] == 1 ? " particle" : " particles");
+    }
+    if (notes) summary += (summary.empty() ? "No warnings at risk.   notes: " : "   notes: ") + std::to_string(notes);
+    return summary;
+}
+
 }  // namespace
 
 void draw_warnings_tab(LabSession& s) {
@@ -34,33 +68,10 @@ void draw_warnings_tab(LabSession& s) {
                             "the method's stability limit, and no state became non-finite.");
         return;
     }
-    // Rows in variant and time order, warnings at risk before notes; in a scene of thousands of
-    // particles, a line per kind first says how many particles share a warning, which a scroll
-    // through the table cannot.
-    struct Row {
-        std::size_t variant;
-        const Warning* warning;
-        bool at_risk;
-    };
-    std::vector<Row> rows;
     std::size_t per_kind[kind_count] = {};
     std::size_t notes = 0;
-    for (std::size_t v = 0; v < e.variant_count(); ++v)
-        for (const Warning& w : e.run(v).warnings()) {
-            const bool at_risk = puts_number_at_risk(w, e.run(v));
-            rows.push_back({v, &w, at_risk});
-            if (at_risk) ++per_kind[static_cast<std::size_t>(w.kind)];
-            else ++notes;
-        }
-    std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.at_risk; });
-    std::string summary;
-    for (std::size_t k = 0; k < kind_count; ++k) {
-        if (per_kind[k] == 0) continue;
-        if (!summary.empty()) summary += "   ";
-        summary += std::string(kind_name(static_cast<WarningKind>(k))) + ": " + std::to_string(per_kind[k]) +
-                   (per_kind[k] == 1 ? " particle" : " particles");
-    }
-    if (notes) summary += (summary.empty() ? "No warnings at risk.   notes: " : "   notes: ") + std::to_string(notes);
+    const std::vector<Row> rows = warning_rows(e, per_kind, notes);
+    const std::string summary = summary_line(per_kind, notes);
     ImGui::TextUnformatted(summary.c_str());
     if (notes && ImGui::IsItemHovered())
         ImGui::SetTooltip("A note: a particle left its drag model's Reynolds range where the model's drag differs from\n"
