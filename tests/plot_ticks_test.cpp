@@ -108,5 +108,39 @@ TEST(DecimateM4, NonFiniteSamplesBreakTheLine) {
     EXPECT_TRUE(std::isnan(out[1].y));
 }
 
+TEST(ConstantRange, ConstantDataSpansZeroToTheValue) {
+    double lo = 0.033, hi = 0.033;  // a ball at rest on the floor
+    constant_range(lo, hi);
+    EXPECT_EQ(lo, 0.0);
+    EXPECT_EQ(hi, 0.033);
+    const Ticks ticks = nice_ticks(lo, hi, 5);
+    ASSERT_GE(ticks.values.size(), 3u);
+    for (std::size_t i = 1; i < ticks.values.size(); ++i)  // distinct labels, none of them "3.3e-02" five times
+        EXPECT_NE(format_tick(ticks.values[i], ticks.step), format_tick(ticks.values[i - 1], ticks.step));
+    lo = hi = 0.0;  // at rest: speed exactly 0
+    constant_range(lo, hi);
+    EXPECT_EQ(lo, -1.0);
+    EXPECT_EQ(hi, 1.0);
+    lo = hi = -2.0;
+    constant_range(lo, hi);
+    EXPECT_EQ(lo, -2.0);
+    EXPECT_EQ(hi, 0.0);
+    lo = 1.0, hi = 1.0 + 1e-12;  // varying data, however little, is shown as it is
+    constant_range(lo, hi);
+    EXPECT_EQ(hi, 1.0 + 1e-12);
+}
+
+TEST(Coincide, LinesWithinAPixelCoincideWhateverTheirSampleTimes) {
+    const std::vector<PlotPoint> a{{0.0, 1.0}, {1.0, 2.0}, {2.0, 3.0}};
+    std::vector<PlotPoint> b{{0.0, 1.0004}, {0.5, 1.5}, {2.0, 3.0}};  // other times, same line
+    EXPECT_TRUE(coincide(a, b, 1e-3, 0.0));
+    b[1].y = 1.6;
+    EXPECT_FALSE(coincide(a, b, 1e-3, 0.0));
+    EXPECT_TRUE(coincide(a, b, 1e-3, 0.34));  // one point of three off: allowed at a third
+    b[1].y = std::nan("");  // a gap in b only
+    EXPECT_FALSE(coincide(a, b, 1e-3, 0.0));
+    EXPECT_FALSE(coincide(a, std::vector<PlotPoint>{{3.0, 4.0}}, 1e-3, 0.0));  // beyond a's span
+}
+
 }  // namespace
 }  // namespace pl::ui

@@ -4,6 +4,7 @@
 #include "ui/frame_recorder.hpp"
 #include "ui/palette.hpp"
 #include "ui/panel_state.hpp"
+#include "ui/pinned_runs.hpp"
 #include "ui/sections.hpp"
 
 #include <imgui.h>
@@ -63,13 +64,29 @@ void cell(const std::string& text) {
     ImGui::TextUnformatted(text.c_str());
 }
 
-// One table row per variant: values, or differences to the baseline.
-void metrics_table(const char* id, LabSession& s, const std::vector<VariantMetrics>& rows, std::size_t particle,
-                   bool differences, const std::vector<double>& cost, const char* cost_name, const char* cost_tip) {
-    const PanelState& p = panels_of(s);
-    const std::size_t baseline = static_cast<std::size_t>(std::max(0, p.baseline_variant)) < rows.size()
-                                     ? static_cast<std::size_t>(p.baseline_variant)
-                                     : 0;
+// The rows of the live table: every variant, then the pinned runs.
+struct RowSet {
+    std::vector<VariantMetrics> metrics;
+    std::vector<std::string> names;
+    std::vector<Rgba> colors;
+    std::vector<double> cost;  // per row; pinned runs have none (NaN)
+};
+
+std::size_t baseline_row(const PanelState& p, std::size_t rows) {
+    return static_cast<std::size_t>(std::max(0, p.baseline_variant)) < rows ? static_cast<std::size_t>(p.baseline_variant) : 0;
+}
+
+std::string cost_cell(const std::vector<double>& cost, std::size_t row, std::size_t baseline, bool difference) {
+    if (row >= cost.size() || std::isnan(cost[row])) return "-";
+    if (!difference) return number(cost[row]);
+    return baseline < cost.size() && !std::isnan(cost[baseline]) ? signed_number(cost[row] - cost[baseline]) : "-";
+}
+
+// One table row per variant (and pinned run): values, or differences to the baseline.
+void metrics_table(const char* id, LabSession& s, const RowSet& set, std::size_t particle, bool differences,
+                   const char* cost_name, const char* cost_tip) {
+    const std::vector<VariantMetrics>& rows = set.metrics;
+    const std::size_t baseline = baseline_row(panels_of(s), rows.size());
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit |
                                   ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY;
     if (!ImGui::BeginTable(id, static_cast<int>(std::size(columns)), flags, ImVec2(0, ImGui::GetContentRegionAvail().y)))
@@ -79,14 +96,14 @@ void metrics_table(const char* id, LabSession& s, const std::vector<VariantMetri
         const VariantMetrics& m = rows[v];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        const Rgba c = series_color(rows.size() > 1 ? static_cast<int>(v) : static_cast<int>(particle));
+        const Rgba c = set.colors[v];
         ImGui::ColorButton("##c", ImVec4(c[0], c[1], c[2], 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
         ImGui::SameLine();
-        const std::string name = variant_name(s, v) + (v == baseline && rows.size() > 1 ? " (baseline)" : "");
+        const std::string name = set.names[v] + (v == baseline && rows.size() > 1 ? " (baseline)" : "");
         ImGui::TextUnformatted(name.c_str());
         if (particle >= m.particles.size()) continue;
         const ParticleMetrics& pm = m.particles[particle];
-        if (differences && v != baseline) {
+        if (differences && v != baseline && particle < rows[baseline].particles.size()) {
             const MetricsDifference d = metrics_difference(m, rows[baseline], particle);
             cell(optional_signed(d.first_impact_time));
             cell(signed_number(d.apex_height));
@@ -96,7 +113,7 @@ void metrics_table(const char* id, LabSession& s, const std::vector<VariantMetri
             cell(signed_number(d.lost_drag));
             cell(signed_number(d.lost_bounce));
             cell(signed_number(d.lost_friction));
-            cell(v < cost.size() && baseline < cost.size() ? signed_number(cost[v] - cost[baseline]) : "-");
+            cell(cost_cell(set.cost, v, baseline, true));
         } else {
             cell(optional_number(pm.first_impact_time));
             cell(number(pm.apex_height));
@@ -106,7 +123,7 @@ void metrics_table(const char* id, LabSession& s, const std::vector<VariantMetri
             cell(number(m.lost_drag));
             cell(number(m.lost_bounce));
             cell(number(m.lost_friction));
-            cell(v < cost.size() ? number(cost[v]) : "-");
+            cell(cost_cell(set.cost, v, baseline, false));
         }
     }
     ImGui::EndTable();
@@ -138,6 +155,57 @@ void timed_run_controls(LabSession& s, PanelState& p) {
                           "(physics wall time per simulated second), like `particle-lab compare`.");
 }
 
+Rgba row_color(std::size_t variants, std::size_t v, std::size_t particle) {
+    return series_color(variants > 1 ? static_cast<int>(v) : static_cast<int>(particle));
+}
+
+RowSet live_rows(const LabSession& s, const PlotHistory& h, std::size_t particle) {
+    RowSet set;
+    const std::size_t variants = s.experiment->variant_count();
+    for (std::size_t v = 0; v < variants; ++v) {
+        const Simulation& sim = s.experiment->run(v);
+        set.metrics.push_back(metrics_of(h.trackers[v], sim));
+        set.names.push_back(variant_name(s, v));
+        set.colors.push_back(row_color(variants, v, particle));
+        set.cost.push_back(sim.time() > 0.0 ? static_cast<double>(sim.counters().gravity) / sim.time() : 0.0);
+    }
+    if (const PinBoard* board = pins_if_any(s))
+        for (const PinnedRun& run : board->runs) {
+            if (!run.metrics) continue;
+            set.metrics.push_back(*run.metrics);
+            set.names.push_back(run.label);
+            set.colors.push_back(pin_color(run.number, 1.0f));
+            set.cost.push_back(std::nan(""));
+        }
+    return set;
+}
+
+RowSet timed_rows(const LabSession& s, const Comparison& c, std::size_t particle) {
+    RowSet set;
+    for (std::size_t v = 0; v < c.variants.size(); ++v) {
+        set.metrics.push_back(c.variants[v]);
+        set.names.push_back(variant_name(s, v));
+        set.colors.push_back(row_color(c.variants.size(), v, particle));
+        set.cost.push_back(1e3 * c.variants[v].cost());
+    }
+    return set;
+}
+
+void baseline_controls(PanelState& p, const RowSet& set, bool& differences) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9.0f);
+    const std::size_t baseline = baseline_row(p, set.names.size());
+    p.baseline_variant = static_cast<int>(baseline);
+    if (ImGui::BeginCombo("baseline", set.names[baseline].c_str())) {
+        for (std::size_t v = 0; v < set.names.size(); ++v)
+            if (ImGui::Selectable(set.names[v].c_str(), v == baseline)) p.baseline_variant = static_cast<int>(v);
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    ImGui::Checkbox("differences", &differences);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show each row minus the baseline (variants and pinned runs)");
+}
+
 }  // namespace
 
 void draw_compare_tab(LabSession& s) {
@@ -155,37 +223,22 @@ void draw_compare_tab(LabSession& s) {
     ImGui::SameLine();
     ImGui::TextDisabled("| particle %zu |", particle);
     bool& differences = p.compare_differences;
-    if (variants > 1) {
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9.0f);
-        if (p.baseline_variant < 0 || static_cast<std::size_t>(p.baseline_variant) >= variants) p.baseline_variant = 0;
-        if (ImGui::BeginCombo("baseline", variant_name(s, static_cast<std::size_t>(p.baseline_variant)).c_str())) {
-            for (std::size_t v = 0; v < variants; ++v)
-                if (ImGui::Selectable(variant_name(s, v).c_str(), static_cast<int>(v) == p.baseline_variant))
-                    p.baseline_variant = static_cast<int>(v);
-            ImGui::EndCombo();
-        }
-        ImGui::SameLine();
-        ImGui::Checkbox("differences", &differences);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show each variant minus the baseline");
-    }
+    const bool live = mode == 0;
+    RowSet set;
+    if (live && h.trackers.size() == variants) set = live_rows(s, h, particle);
+    if (!live && p.timed_compare.result() && p.timed_compare.result()->variants.size() == variants)
+        set = timed_rows(s, *p.timed_compare.result(), particle);
+    if (set.metrics.size() > 1) baseline_controls(p, set, differences);
 
-    if (mode == 0) {
+    if (live) {
         if (h.trackers.size() != variants) {
             ImGui::TextWrapped("Live metrics follow every step of up to %zu particles; this scene has %zu. "
                                "Use the timed run instead.", PlotHistory::max_metrics_particles, particles);
             return;
         }
-        std::vector<VariantMetrics> rows;
-        std::vector<double> cost;
-        for (std::size_t v = 0; v < variants; ++v) {
-            const Simulation& sim = s.experiment->run(v);
-            rows.push_back(metrics_of(h.trackers[v], sim));
-            cost.push_back(sim.time() > 0.0 ? static_cast<double>(sim.counters().gravity) / sim.time() : 0.0);
-        }
-        metrics_table("##live", s, rows, particle, differences, cost, "force evals / s",
+        metrics_table("##live", s, set, particle, differences, "force evals / s",
                       "Force evaluations (one per particle per evaluation) per simulated second: the work the\n"
-                      "method does. Wall-clock cost: use the timed run.");
+                      "method does. Wall-clock cost: use the timed run. Pinned runs: their metrics when pinned.");
         return;
     }
     timed_run_controls(s, p);
@@ -201,13 +254,11 @@ void draw_compare_tab(LabSession& s) {
     }
     ImGui::SameLine();
     ImGui::TextDisabled("%s%g s simulated", c.cancelled ? "cancelled, " : "", c.variants.empty() ? 0.0 : c.variants[0].simulated_seconds);
-    std::vector<double> cost;
-    for (const VariantMetrics& m : c.variants) cost.push_back(1e3 * m.cost());
     if (c.variants.size() != variants) {
         ImGui::TextDisabled("(the scene changed since this run)");
         return;
     }
-    metrics_table("##timed", s, c.variants, particle, differences, cost, "cost (ms / sim s)",
+    metrics_table("##timed", s, set, particle, differences, "cost (ms / sim s)",
                   "Physics wall time per simulated second, measured in the background run.");
 }
 

@@ -11,10 +11,6 @@
 namespace pl::ui {
 namespace {
 
-// Per-particle samples closer than this in simulated time are skipped when record_step runs
-// every step: plots gain nothing from more, and a 10 us dt would otherwise flood the buffers.
-constexpr double min_particle_sample_interval_s = 5e-4;
-
 // Starts recording a fresh experiment. The shell steps before it records, so the experiment is
 // usually a frame past t = 0 already: the metrics and the first samples then start from the
 // scene's initial state (what every fresh or reset experiment starts from), so nothing of the
@@ -26,6 +22,8 @@ void start_tracking(PlotHistory& h, const Experiment& e) {
     const bool metrics = h.particle_count <= PlotHistory::max_metrics_particles;
     std::vector<ParticleSpec> initial;
     if (metrics) initial = initial_particles(e.scene());
+    const std::vector<ParticleSpec>& listed = metrics ? initial : e.scene().particles;
+    if (!listed.empty()) h.launch_velocity = listed.front().velocity;
     for (std::size_t v = 0; v < e.variant_count(); ++v) {
         const Simulation& sim = e.run(v);
         VariantCursor& c = h.cursors[v];
@@ -47,6 +45,7 @@ void start_tracking(PlotHistory& h, const Experiment& e) {
             tracks[i].height.push(0.0, start.state().y[i] - floor_y);
             tracks[i].speed.push(0.0, glm::length(vel));
             tracks[i].kinetic.push(0.0, kinetic_energy(start.state().mass[i], vel));
+            h.variants[v].paths[i].push(0.0, start.state().position(i));
         }
         const EnergyBreakdown total = total_energy(start.state(), start.model().world.gravity, start.model().room);
         LedgerTrack& l = h.variants[v].ledger;
@@ -113,6 +112,7 @@ void observe(LabSession& s, PlotHistory& h, std::size_t v, std::vector<LoggedEve
         if (!tracker) continue;
         const std::vector<ParticleSpec> start = initial_particles(s.scene);
         if (i < start.size()) restart_metrics(*tracker, i, start[i].position, s.launch_velocity, tracker->prev_time);
+        if (i == 0) h.launch_velocity = s.launch_velocity;
     }
 
     const std::vector<Event> fresh(events.begin() + static_cast<std::ptrdiff_t>(c.consumed_events), events.end());
@@ -142,12 +142,13 @@ void sample_particles(PlotHistory& h, const Experiment& e, double t) {
         const Simulation& sim = e.run(v);
         const ParticleState& st = sim.state();
         const double floor_y = sim.model().room.floor_y();
-        std::vector<ParticleTrack>& tracks = h.variants[v].particles;
-        for (std::size_t i = 0; i < tracks.size() && i < st.size(); ++i) {
+        VariantTrack& track = h.variants[v];
+        for (std::size_t i = 0; i < track.particles.size() && i < st.size(); ++i) {
             const Vec3 vel = st.velocity(i);
-            tracks[i].height.push(t, st.y[i] - floor_y);
-            tracks[i].speed.push(t, glm::length(vel));
-            tracks[i].kinetic.push(t, kinetic_energy(st.mass[i], vel));
+            track.particles[i].height.push(t, st.y[i] - floor_y);
+            track.particles[i].speed.push(t, glm::length(vel));
+            track.particles[i].kinetic.push(t, kinetic_energy(st.mass[i], vel));
+            track.paths[i].push(t, st.position(i));
         }
     }
     h.last_particle_sample = t;
@@ -206,29 +207,43 @@ PlotHistory& history_of(LabSession& s) {
     return h;
 }
 
+namespace {
+
+// Base steps from now until `interval_s` has passed since `last_t` (at least 1).
+std::uint64_t steps_until(const Experiment& e, double last_t, double interval_s) {
+    if (last_t < 0.0) return 1;
+    const double due = last_t + interval_s * (1.0 - 1e-9) - e.time();
+    return due <= 0.0 ? 1 : std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(due / e.base_dt())));
+}
+
+bool due(double last_t, double t, double interval_s) { return last_t < 0.0 || t - last_t >= interval_s * (1.0 - 1e-9); }
+
+}  // namespace
+
 std::uint64_t record_step(LabSession& s) {
     constexpr std::uint64_t no_limit = std::numeric_limits<std::uint64_t>::max();
     if (!s.experiment) return no_limit;
     PlotHistory& h = history_of(s);
-    if (h.trackers.empty()) return no_limit;  // no live metrics: record_frame's samples suffice
-    observe_all(s, h);
-    const double t = s.experiment->time();
-    if (t - h.last_particle_sample >= min_particle_sample_interval_s) sample_particles(h, *s.experiment, t);
-    return 1;
+    Experiment& e = *s.experiment;
+    const double t = e.time();
+    if (!h.trackers.empty()) observe_all(s, h);
+    if (due(h.last_particle_sample, t, h.particle_interval_s())) sample_particles(h, e, t);
+    if (due(h.last_time, t, h.aggregate_interval_s())) {
+        sample_aggregates(h, e, t);
+        h.last_time = t;
+    }
+    if (!h.trackers.empty()) return 1;  // live metrics observe every step
+    return std::min(steps_until(e, h.last_particle_sample, h.particle_interval_s()),
+                    steps_until(e, h.last_time, h.aggregate_interval_s()));
 }
 
 void record_frame(LabSession& s) {
     if (!s.experiment) return;
     PlotHistory& h = history_of(s);
     observe_all(s, h);
+    // Samples come from record_step only (fixed simulated intervals); the frame hands the
+    // recorded events back so the simulations' buffers stay small.
     Experiment& e = *s.experiment;
-    const double t = e.time();
-    if (t > h.last_particle_sample || h.last_particle_sample < 0.0) sample_particles(h, e, t);
-    if (t > h.last_time || h.last_time < 0.0) {
-        sample_aggregates(h, e, t);
-        h.last_time = t;
-    }
-    // Everything is recorded: hand the events back so the simulations' buffers stay small.
     for (std::size_t v = 0; v < e.variant_count(); ++v) {
         e.run(v).drain_events();
         h.cursors[v].consumed_events = 0;
@@ -248,6 +263,7 @@ void kick_particle(LabSession& s, std::size_t i, const Vec3& velocity) {
         h.cursors[v].initial_energy[i] = sim.state().initial_energy[i];
         if (v < h.trackers.size()) restart_metrics(h.trackers[v], i, position, velocity, t);
     }
+    if (i == 0) h.launch_velocity = velocity;
 }
 
 }  // namespace pl::ui

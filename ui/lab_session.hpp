@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ namespace pl::ui {
 
 struct PlotHistory;  // ui/plot_history.hpp: bounded per-series sample buffers
 struct PanelState;   // ui/panel_state.hpp: what the panels remember between frames
+struct PinBoard;     // ui/pinned_runs.hpp: runs kept beside the live one
 
 // What the shell measured this frame (shown in the status bar).
 struct FrameStats {
@@ -42,6 +44,10 @@ struct Requests {
     bool quit = false;
 };
 
+// Particle 0 of a scene as it starts (the explicit list's first, else the emitter's); none
+// without particles.
+std::optional<ParticleSpec> first_particle(const Scene& scene);
+
 struct LabSession {
     Scene scene;                               // what the user edits (the preset)
     std::unique_ptr<Experiment> experiment;    // running instance built from `scene`
@@ -51,20 +57,23 @@ struct LabSession {
     double time_scale = 1.0;
     int selected_particle = 0;
     int selected_variant = 0;
-    Vec3 launch_velocity{3.0, 4.0, 1.0};       // the L key / launch tool
+    Vec3 launch_velocity{3.0, 4.0, 1.0};       // the L key / launch tool; a preset sets its particle 0's
     std::string error_popup;                   // non-empty: shown in a modal, scene untouched
     std::string status_message;                // transient one-line message
     Requests requests;
     FrameStats frame;
     std::shared_ptr<PlotHistory> history;      // created by the ui on first use
     std::shared_ptr<PanelState> panels;        // created by the ui on first use
+    std::shared_ptr<PinBoard> pins;            // created by the ui on first pin; survives loads and edits
     std::filesystem::path preset_dir;          // shipped presets (the shell sets PL_PRESET_DIR)
 
     // 3D view options (the shell's view toolbar edits them; panels may too).
     bool show_trails = true;
+    int trail_particles = 16;                  // trails (and drop lines) for the first N particles of each variant
     bool show_velocity = false;                // velocity arrows on the particles
     bool show_wind = false;                    // wind field arrows on a grid
-    bool split_view = false;                   // one viewport per variant (up to 4) instead of overlaid
+    bool split_view = false;                   // one viewport per variant (up to 9) instead of overlaid
+    std::vector<int> split_variants;           // the variants the split view shows (empty: the first 9)
     // Popups the shell toggles from keys and window events; draw_popups shows them.
     bool show_help = false;                    // F1/H toggle, Esc closes
     bool confirm_quit = false;                 // window closed with unsaved changes: ask, then set requests.quit
@@ -74,6 +83,9 @@ struct LabSession {
 
     // Replaces the scene and rebuilds the experiment; on failure nothing changes.
     bool load(const std::filesystem::path& file);
+    // A preset opened from `file`: the scene, and the launch it defines (particle 0's velocity
+    // becomes the Launch panel's, so L throws what the preset throws).
+    void open_preset(const Scene& s, const std::filesystem::path& file);
     void apply_scene(const Scene& s);          // rebuild the experiment from an edited scene
 };
 

@@ -3,7 +3,9 @@
 #include "ui/lab_ui.hpp"
 
 #include "ui/panel_state.hpp"
+#include "ui/pinned_runs.hpp"
 #include "ui/sections.hpp"
+#include "ui/warning_risk.hpp"
 
 #include <imgui.h>
 
@@ -31,18 +33,30 @@ void note_item_rect(LabSession& s, const std::string& name) {
     s.widget_rects[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
 }
 
-std::size_t warning_count(const LabSession& s) {
+namespace {
+
+std::size_t count_warnings(const LabSession& s, bool at_risk) {
     std::size_t n = 0;
     if (s.experiment)
-        for (const Simulation& sim : s.experiment->runs()) n += sim.warnings().size();
+        for (const Simulation& sim : s.experiment->runs())
+            for (const Warning& w : sim.warnings()) n += puts_number_at_risk(w, sim) == at_risk;
     return n;
 }
+
+}  // namespace
+
+std::size_t warning_count(const LabSession& s) { return count_warnings(s, true); }
+std::size_t note_count(const LabSession& s) { return count_warnings(s, false); }
 
 void draw_control_panel(LabSession& s) {
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     const std::string preset_header = std::string("Preset") + (s.dirty ? " *" : "") + "###preset";
     if (panels_of(s).focus_open_path) ImGui::SetNextItemOpen(true);  // Ctrl+O needs its field on screen
     if (ImGui::CollapsingHeader(preset_header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) draw_preset_section(s);
+    if (ImGui::CollapsingHeader("About this experiment", ImGuiTreeNodeFlags_DefaultOpen)) draw_about_section(s);
+    const std::size_t pinned = pins_if_any(s) ? pins_if_any(s)->runs.size() : 0;
+    const std::string runs_header = "Runs (" + std::to_string(pinned) + " pinned)###runs";
+    if (ImGui::CollapsingHeader(runs_header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) draw_runs_section(s);
     if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) draw_time_section(s);
     if (ImGui::CollapsingHeader("Launch", ImGuiTreeNodeFlags_DefaultOpen)) draw_launch_section(s);
     if (ImGui::CollapsingHeader("Scene")) draw_scene_section(s);
@@ -212,6 +226,7 @@ void help_overlay(LabSession& s) {
         {"N", "one step (pauses)"},
         {"R", "reset to the preset's initial state"},
         {"L", "launch particle 0 again with the Launch panel's velocity"},
+        {"P", "pin this run: it stays beside the live run (plots, 3D view, Compare tab)"},
         {"W A S D", "move the camera forward / left / back / right"},
         {"Q E", "move the camera down / up"},
         {"left drag", "orbit the camera around the room"},

@@ -8,14 +8,16 @@
 
 namespace pl::ui {
 
-// Call once per frame after physics stepping: appends plot samples and takes the new events
-// (drains Simulation::events() of every variant).
+// Call once per frame after physics stepping: takes the new events into the log (drains
+// Simulation::events() of every variant). It samples nothing: plot samples come from record_step.
 void record_frame(LabSession&);
 // After base steps (the shell's after-steps hook, also inside single step and run to the next
 // event). With live comparison metrics (up to PlotHistory::max_metrics_particles particles) it
 // observes every step, so that they are those of a timed run (the apex and the range at the
-// first impact need every step), and samples the plots finely. Returns how many base steps may
-// pass before it must run again: 1 with live metrics, otherwise no limit (record_frame does).
+// first impact need every step). It samples the plots at fixed simulated intervals
+// (PlotHistory::particle_interval_s, aggregate_interval_s), so a plot never depends on the frame
+// rate. Returns how many base steps may pass before it must run again: 1 with live metrics,
+// otherwise the steps until the next sample is due.
 std::uint64_t record_step(LabSession&);
 void draw_control_panel(LabSession&);   // left column: preset, time, launch, scene, variants, inspector
 void draw_plots_panel(LabSession&);     // height / speed / kinetic energy / energy ledger plots

@@ -41,7 +41,11 @@ void to_log_space(Item& item) {
     for (int i = 0; i < item.count; ++i) item.log_xs[static_cast<std::size_t>(i)] = to_log(item.xs[i]);
     if (item.ys) {
         item.log_ys.resize(static_cast<std::size_t>(item.count));
-        for (int i = 0; i < item.count; ++i) item.log_ys[static_cast<std::size_t>(i)] = to_log(item.ys[i]);
+        item.zeros_on_log = 0;
+        for (int i = 0; i < item.count; ++i) {
+            item.log_ys[static_cast<std::size_t>(i)] = to_log(item.ys[i]);
+            if (item.ys[i] <= 0.0 && item.xs[i] > 0.0) ++item.zeros_on_log;  // e.g. an exact error of 0
+        }
     }
 }
 
@@ -111,6 +115,10 @@ void PlotLine(const char* label, const double* xs, const double* ys, int count, 
 
 void PlotLine(const char* label, const SampleSeries& series, const Rgba& color, float thickness) {
     PlotLine(label, series.times(), series.values(), static_cast<int>(series.size()), color, thickness);
+}
+
+void SetItemDetail(std::function<std::string(double x)> detail) {
+    if (!context().items.empty()) context().items.back().detail = std::move(detail);
 }
 
 void PlotMarkers(const char* label, const double* xs, const double* ys, int count, const Rgba& color, Marker shape,
@@ -227,6 +235,7 @@ void y_range(Context& c, bool fit_all, double x0, double x1, double& y0, double&
     if (fit_all || st.auto_fit_y) {
         y0 = ye.valid() ? ye.lo : 0.0;
         y1 = ye.valid() ? ye.hi : 1.0;
+        if (!has_flag(PlotFlags_LogLog)) constant_range(y0, y1);
         pad(y0, y1, 0.06);
         st.y_min = y0;
         st.y_max = y1;
@@ -240,8 +249,12 @@ std::vector<LegendEntry> legend_entries(const Context& c) {
     if (has_flag(PlotFlags_NoLegend)) return entries;
     for (const Item& item : c.items) {
         if (item.legend.empty() || item.kind == ItemKind::text || item.kind == ItemKind::band) continue;
-        if (std::none_of(entries.begin(), entries.end(), [&](const LegendEntry& e) { return e.label == item.legend; }))
-            entries.push_back({item.legend, item.color, {}, {}});
+        if (std::none_of(entries.begin(), entries.end(), [&](const LegendEntry& e) { return e.label == item.legend; })) {
+            std::string note;
+            if (!item.coincides_with.empty()) note = "(dashed: on " + item.coincides_with + ")";
+            if (item.zeros_on_log > 0) note += std::string(note.empty() ? "" : " ") + "(zeros: marks on the x axis)";
+            entries.push_back({item.legend, note, item.color, {}, {}});
+        }
     }
     return entries;
 }
@@ -251,7 +264,8 @@ PlotLayout layout(const Context& c, const std::vector<LegendEntry>& entries, dou
                   double y1, bool log, float line_h, AxisTicks& yt) {
     PlotLayout l;
     const float swatch = line_h * 0.7f, padding = 4.0f;
-    for (const LegendEntry& e : entries) l.entry_w = std::max(l.entry_w, ImGui::CalcTextSize(e.label.c_str()).x);
+    for (const LegendEntry& e : entries)
+        l.entry_w = std::max(l.entry_w, ImGui::CalcTextSize((e.label + (e.note.empty() ? "" : " " + e.note)).c_str()).x);
     l.entry_w += swatch + 3 * padding;
     l.legend_outside = has_flag(PlotFlags_LegendOutside) && !entries.empty();
     l.widget_min = c.frame_min;
@@ -290,6 +304,8 @@ PlotResult EndPlot() {
     double x0 = 0.0, x1 = 1.0, y0 = 0.0, y1 = 1.0;
     x_range(c, fit_all, log, x0, x1);
     y_range(c, fit_all, x0, x1, y0, y1);
+    // Within a line's width (1.5 px) a curve is hidden under the one drawn over it.
+    mark_coincident(c.items, 1.5 * (y1 - y0) / std::max(1.0f, c.frame_size.y));
     std::vector<LegendEntry> entries = legend_entries(c);
     AxisTicks yt;
     const PlotLayout l = layout(c, entries, x0, x1, y0, y1, log, style.line_h, yt);

@@ -20,6 +20,7 @@
 
 #include <imgui.h>
 
+#include <functional>
 #include <limits>
 #include <set>
 #include <string>
@@ -66,6 +67,10 @@ void SetupLegendHidden(std::set<std::string>* hidden);
 
 void PlotLine(const char* label, const double* xs, const double* ys, int count, const Rgba& color, float thickness = 1.5f);
 void PlotLine(const char* label, const SampleSeries& series, const Rgba& color, float thickness = 1.5f);
+// Lines to the hover readout of the item plotted last, at the hovered sample's x (e.g. the state
+// of the particle at that time). Called during the frame; the function may keep references to
+// data that lives until EndPlot.
+void SetItemDetail(std::function<std::string(double x)> detail);
 // Markers at (x, y); with ys == nullptr they are ticks standing on the x axis (event times).
 void PlotMarkers(const char* label, const double* xs, const double* ys, int count, const Rgba& color,
                  Marker shape = Marker::circle, float size = 4.0f);

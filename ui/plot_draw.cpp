@@ -27,6 +27,24 @@ Extent x_extent(const std::vector<Item>& items, bool sorted) {
     return e;
 }
 
+void mark_coincident(std::vector<Item>& items, double y_per_pixel) {
+    for (std::size_t j = 0; j < items.size(); ++j) {
+        Item& later = items[j];
+        later.coincides_with.clear();
+        later.dash_style = 0;
+        if (later.kind != ItemKind::line || !item_visible(later) || later.legend.empty()) continue;
+        for (std::size_t i = 0; i < j; ++i) {
+            const Item& earlier = items[i];
+            if (earlier.kind != ItemKind::line || !item_visible(earlier) || earlier.legend.empty() ||
+                earlier.legend == later.legend || !coincide(earlier.points, later.points, y_per_pixel))
+                continue;
+            // Named after the first line of the group; each further one gets the next pattern.
+            later.coincides_with = earlier.coincides_with.empty() ? earlier.legend : earlier.coincides_with;
+            later.dash_style = earlier.dash_style + 1;
+        }
+    }
+}
+
 void pad(double& lo, double& hi, double fraction) {
     if (hi > lo) {
         const double m = (hi - lo) * fraction;
@@ -93,11 +111,44 @@ void draw_marker(ImDrawList* dl, ImVec2 p, Marker shape, float r, ImU32 col) {
     }
 }
 
-void draw_polyline(ImDrawList* dl, const Frame& f, const std::vector<PlotPoint>& points, ImU32 col, float thickness) {
+// A run of points as dashes of `on` pixels with `off` pixel gaps, the pattern carried across
+// the run's segments so the dashes keep their length however finely the line is sampled.
+void draw_dashed(ImDrawList* dl, const std::vector<ImVec2>& run, ImU32 col, float thickness, float on, float off) {
+    float phase = 0.0f;  // position within the current on+off period
+    for (std::size_t k = 0; k + 1 < run.size(); ++k) {
+        const ImVec2 a = run[k], b = run[k + 1];
+        const float length = std::hypot(b.x - a.x, b.y - a.y);
+        float done = 0.0f;
+        while (done < length) {
+            const bool drawing = phase < on;
+            const float step = std::min(length - done, drawing ? on - phase : on + off - phase);
+            if (drawing && length > 0.0f) {
+                const float t0 = done / length, t1 = (done + step) / length;
+                dl->AddLine({a.x + (b.x - a.x) * t0, a.y + (b.y - a.y) * t0}, {a.x + (b.x - a.x) * t1, a.y + (b.y - a.y) * t1}, col,
+                            thickness);
+            }
+            done += step;
+            phase += step;
+            if (phase >= on + off) phase = 0.0f;
+        }
+    }
+}
+
+// Dash patterns (on, off) in pixels for the 1st, 2nd, ... line that coincides with another.
+constexpr float dash_patterns[][2] = {{7.0f, 5.0f}, {2.0f, 4.0f}, {12.0f, 4.0f}, {4.0f, 9.0f}};
+
+void draw_polyline(ImDrawList* dl, const Frame& f, const std::vector<PlotPoint>& points, ImU32 col, float thickness,
+                   int dash_style = 0) {
     static std::vector<ImVec2> run;
     auto flush = [&] {
-        if (run.size() >= 2) dl->AddPolyline(run.data(), static_cast<int>(run.size()), col, ImDrawFlags_None, thickness);
-        else if (run.size() == 1) dl->AddCircleFilled(run[0], thickness, col, 6);
+        if (run.size() >= 2 && dash_style > 0) {
+            const float* pattern = dash_patterns[static_cast<std::size_t>(dash_style - 1) % std::size(dash_patterns)];
+            draw_dashed(dl, run, col, thickness + 0.5f, pattern[0], pattern[1]);
+        } else if (run.size() >= 2) {
+            dl->AddPolyline(run.data(), static_cast<int>(run.size()), col, ImDrawFlags_None, thickness);
+        } else if (run.size() == 1) {
+            dl->AddCircleFilled(run[0], thickness, col, 6);
+        }
         run.clear();
     };
     run.clear();
@@ -200,6 +251,19 @@ void draw_markers(ImDrawList* dl, const Frame& f, const Item& item) {
     }
 }
 
+// Samples <= 0 have no place on a log axis: a small triangle standing on the x axis marks each
+// (an error of exactly 0 is a result, not a missing point).
+void draw_log_zeros(ImDrawList* dl, const Frame& f, const Item& item) {
+    const float r = 4.0f;
+    for (int i = 0; i < item.count; ++i) {
+        if (!(item.ys[i] <= 0.0)) continue;
+        const double x = plot_xs(item)[i];
+        if (!(x >= f.x0 && x <= f.x1)) continue;
+        const float px = f.px(x), base = f.max.y - 1.0f;
+        dl->AddTriangleFilled({px - r, base}, {px + r, base}, {px, base - 1.7f * r}, item.color);
+    }
+}
+
 }  // namespace
 
 void draw_items(ImDrawList* dl, const Context& c, const Frame& f, bool log, const Style& s) {
@@ -213,8 +277,9 @@ void draw_items(ImDrawList* dl, const Context& c, const Frame& f, bool log, cons
     }
     for (const Item& item : c.items) {
         if (!item_visible(item)) continue;
+        if (item.zeros_on_log > 0) draw_log_zeros(dl, f, item);
         if (item.kind == ItemKind::line) {
-            draw_polyline(dl, f, item.points, item.color, item.thickness);
+            draw_polyline(dl, f, item.points, item.color, item.thickness, item.dash_style);
         } else if (item.kind == ItemKind::markers) {
             draw_markers(dl, f, item);
         } else if (item.kind == ItemKind::text && std::isfinite(item.rect[0]) && std::isfinite(item.rect[1])) {
@@ -255,6 +320,9 @@ void draw_legend(ImDrawList* dl, const Context& c, const PlotLayout& l, std::vec
         if (hidden) dl->AddRect(sw_min, sw_max, e.color);
         else dl->AddRectFilled(sw_min, sw_max, e.color);
         dl->AddText({sw_max.x + padding, e.min.y + 1.0f}, hidden ? s.dim : s.text, e.label.c_str());
+        if (!e.note.empty())
+            dl->AddText({sw_max.x + padding + ImGui::CalcTextSize((e.label + " ").c_str()).x, e.min.y + 1.0f}, s.dim,
+                        e.note.c_str());
     }
 }
 

@@ -4,6 +4,7 @@
 // it alone.
 #pragma once
 
+#include "physics/model/scene.hpp"
 #include "physics/stepping/events.hpp"
 #include "physics/studies/metrics.hpp"
 
@@ -91,6 +92,43 @@ private:
     std::vector<double> t_, v_;
 };
 
+// Positions of one particle at a fixed simulated interval (a pinned run's ghost path in the 3D
+// view). When full, every other sample goes and the interval doubles, so the samples stay evenly
+// spaced in time however long the run. A particle at rest adds nothing (same position).
+class PathSeries {
+public:
+    static constexpr std::size_t capacity = 4096;
+    static constexpr double initial_interval_s = 1.0 / 200.0;
+
+    // Records `p` at time t once an interval has passed since the last recorded sample.
+    void push(double t, const Vec3& p) {
+        if (!t_.empty() && (t - t_.back() < interval_s_ * (1.0 - 1e-9) || p == p_.back())) return;
+        if (t_.size() == capacity) thin();
+        t_.push_back(t);
+        p_.push_back(p);
+    }
+    std::size_t size() const { return t_.size(); }
+    double time(std::size_t k) const { return t_[k]; }
+    const Vec3& position(std::size_t k) const { return p_[k]; }
+    double interval_s() const { return interval_s_; }
+
+private:
+    void thin() {
+        std::size_t out = 0;
+        for (std::size_t k = 0; k < t_.size(); k += 2, ++out) {
+            t_[out] = t_[k];
+            p_[out] = p_[k];
+        }
+        t_.resize(out);
+        p_.resize(out);
+        interval_s_ *= 2.0;
+    }
+
+    double interval_s_ = initial_interval_s;
+    std::vector<double> t_;
+    std::vector<Vec3> p_;
+};
+
 // Each track's `all()` lists its series, so that the sample budget counts and sizes exactly these.
 
 // What the plots show for one particle of one variant.
@@ -119,6 +157,7 @@ constexpr std::size_t series_count = std::tuple_size_v<decltype(std::declval<T&>
 
 struct VariantTrack {
     std::vector<ParticleTrack> particles;  // the first PlotHistory::max_tracked_particles
+    std::vector<PathSeries> paths;         // their positions
     AggregateTrack aggregate;              // every particle
     LedgerTrack ledger;
 };
@@ -151,8 +190,9 @@ struct PlotHistory {
     std::deque<LoggedEvent> events;   // newest last, at most max_logged_events
     std::uint64_t events_dropped = 0; // older events pushed out of `events`
     std::size_t particle_count = 0;   // particles per variant in the experiment
-    double last_time = -1.0;          // simulated time of the last recorded frame
+    double last_time = -1.0;          // simulated time of the last ledger / aggregate sample
     double last_particle_sample = -1.0;  // simulated time of the last per-particle sample
+    Vec3 launch_velocity{0.0};        // particle 0's velocity at its latest launch (a pinned run's setting)
 
     const void* source = nullptr;     // the Experiment recorded (a new one starts over)
     std::uint64_t source_steps = 0;   // its base steps at the last observation (fewer: a reset)
@@ -171,6 +211,7 @@ struct PlotHistory {
         variants.assign(variant_count, VariantTrack{});
         for (VariantTrack& v : variants) {
             v.particles.resize(tracked);
+            v.paths.resize(tracked);
             for (ParticleTrack& p : v.particles)
                 for (SampleSeries* s : p.all()) s->set_capacity(capacity);
             for (SampleSeries* s : v.aggregate.all()) s->set_capacity(capacity);
@@ -195,6 +236,12 @@ struct PlotHistory {
     }
 
     bool aggregated() const { return particle_count > max_tracked_particles; }
+
+    // Simulated seconds between two samples of the ledger and the aggregates (O(particles) each),
+    // and between two samples of the tracked particles. Fixed intervals, never frames: a jump
+    // ahead ("Next event") is sampled like a smooth run.
+    double aggregate_interval_s() const { return particle_count <= max_metrics_particles ? 0.005 : 0.02; }
+    double particle_interval_s() const { return aggregated() ? aggregate_interval_s() : 5e-4; }
 };
 
 }  // namespace pl::ui

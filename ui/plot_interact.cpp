@@ -150,6 +150,10 @@ void hover_readout(Context& c, const Frame& f, const LegendEntry* over_entry, bo
     if (!n.item->legend.empty()) ImGui::TextUnformatted(n.item->legend.c_str());
     ImGui::Text("%s: %.6g", c.x_label.empty() ? "x" : c.x_label.c_str(), n.x);
     ImGui::Text("%s: %.6g", c.y_label.empty() ? "y" : c.y_label.c_str(), n.y);
+    if (n.item->detail) {
+        ImGui::Separator();
+        ImGui::TextUnformatted(n.item->detail(n.x).c_str());
+    }
     ImGui::EndTooltip();
 }
 

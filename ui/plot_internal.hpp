@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <set>
 #include <string>
@@ -39,6 +40,12 @@ struct Item {
     // Log plots draw from transformed copies; the originals stay for the CSV.
     std::vector<double> log_xs, log_ys;
     std::vector<PlotPoint> points;  // decimated, in plot coordinates
+    // A line drawn on the same pixels as an earlier one: the legend names that one, and this one
+    // is dashed (dash_style 1, 2, ...: a different pattern for each further coincident line).
+    std::string coincides_with;
+    int dash_style = 0;
+    int zeros_on_log = 0;  // samples <= 0 in a log plot: marked on the x axis, not dropped
+    std::function<std::string(double)> detail;  // SetItemDetail: extra readout lines
 };
 
 // What a plot remembers between frames (keyed by its id, like ImPlot's context).
@@ -100,6 +107,7 @@ struct Extent {
 // One legend entry per label; min/max is where it was drawn (for clicks).
 struct LegendEntry {
     std::string label;
+    std::string note;  // e.g. "(dashed, on 'none')": drawn dim after the label
     ImU32 color;
     ImVec2 min, max;
 };
@@ -121,6 +129,8 @@ struct Style {
 // plot_math.cpp-like helpers (plot_draw.cpp)
 Extent x_extent(const std::vector<Item>& items, bool sorted);
 void pad(double& lo, double& hi, double fraction);
+// Marks lines that draw on the same pixels as an earlier one (Item::coincides_with, dash_style).
+void mark_coincident(std::vector<Item>& items, double y_per_pixel);
 struct AxisTicks {
     std::vector<double> at;  // in plot coordinates (log10 for log axes)
     std::vector<std::string> labels;

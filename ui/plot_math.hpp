@@ -83,6 +83,46 @@ inline std::string format_tick(double value, double step) {
     return buf;
 }
 
+// The y range of data that never changes (lo == hi): the span from zero to the value, so a ball
+// at rest at 0.033 m reads "0 .. 0.04" and not five labels of 0.033, and an exact zero gets
+// [-1, 1] rather than +-1e-9 of rounding noise. Varying data (lo < hi) is left as it is.
+inline void constant_range(double& lo, double& hi) {
+    if (!(lo == hi) || !std::isfinite(lo)) return;
+    if (lo == 0.0) {
+        lo = -1.0;
+        hi = 1.0;
+        return;
+    }
+    const double v = lo;
+    lo = std::min(0.0, v);
+    hi = std::max(0.0, v);
+}
+
+// Whether a decimated line `b` draws (nearly) on the pixels of line `a`: at each of b's points,
+// a interpolated linearly at that x (both ascending in x; the lines' sample times may differ,
+// e.g. at bounces) is within `tolerance` (data units, about a line's width), at all but
+// `allowed_off` of the points: a curve hidden under another for most of its length hides just
+// as well as one hidden all along. A point outside a's span or at a gap counts as off.
+template <class Point>
+bool coincide(const std::vector<Point>& a, const std::vector<Point>& b, double tolerance, double allowed_off = 0.1) {
+    if (a.size() < 2 || b.empty()) return false;
+    std::size_t off = 0, k = 0;
+    const auto budget = static_cast<std::size_t>(allowed_off * static_cast<double>(b.size()));
+    for (const Point& p : b) {
+        while (k + 2 < a.size() && a[k + 1].x < p.x) ++k;
+        const Point &lo = a[k], &hi = a[k + 1];
+        bool near = false;
+        if (p.x >= lo.x && p.x <= hi.x && std::isfinite(lo.y) && std::isfinite(hi.y)) {
+            const double y = hi.x > lo.x ? lo.y + (hi.y - lo.y) * (p.x - lo.x) / (hi.x - lo.x) : lo.y;
+            near = std::isfinite(p.y) && std::abs(p.y - y) <= tolerance;
+            // Where a jumps (two samples at one time, a bounce), either side will do.
+            near = near || (hi.x == lo.x && std::isfinite(p.y) && std::abs(p.y - hi.y) <= tolerance);
+        }
+        if (!near && ++off > budget) return false;
+    }
+    return true;
+}
+
 struct PlotPoint {
     double x, y;  // y is NaN at a gap (a non-finite sample): the line breaks there
 };

@@ -4,10 +4,15 @@
 #include "ui/lab_ui.hpp"
 #include "ui/palette.hpp"
 #include "ui/panel_state.hpp"
+#include "ui/pinned_runs.hpp"
 #include "ui/plot.hpp"
 #include "ui/sections.hpp"
 
+#include <fmt/format.h>
 #include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <fstream>
 #include <string>
@@ -23,7 +28,30 @@ struct Line {
     const SampleSeries* series;
     Rgba color;
     float thickness = 1.5f;
+    const ParticleTrack* track = nullptr;  // the hover readout's state of the particle
+    const PathSeries* path = nullptr;
 };
+
+// The sample of `s` at or just before t (the first one before the series starts).
+double value_at(const SampleSeries& s, double t) {
+    if (s.empty()) return std::nan("");
+    const double* end = s.times() + s.size();
+    const std::ptrdiff_t k = std::upper_bound(s.times(), end, t) - s.times();
+    return s.values()[static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, k - 1))];
+}
+
+// What the hover readout adds on a particle's curve: its state at the hovered time.
+std::string particle_state_at(const ParticleTrack& track, const PathSeries* path, double t) {
+    std::string out = fmt::format("t = {:.4f} s\nheight {:.4g} m\nspeed {:.4g} m/s\nkinetic energy {:.4g} J", t,
+                                  value_at(track.height, t), value_at(track.speed, t), value_at(track.kinetic, t));
+    if (path && path->size() > 0) {
+        std::size_t k = 0;
+        while (k + 1 < path->size() && path->time(k + 1) <= t) ++k;
+        const Vec3& p = path->position(k);
+        out += fmt::format("\nposition ({:.3f}, {:.3f}, {:.3f}) m at t = {:.3f} s", p.x, p.y, p.z, path->time(k));
+    }
+    return out;
+}
 
 struct Marks {
     std::string label;
@@ -46,6 +74,26 @@ struct MotionSeries {
 
 const SampleSeries& particle_series(const ParticleTrack& t, Quantity q) {
     return q == Quantity::height ? t.height : q == Quantity::speed ? t.speed : t.kinetic;
+}
+
+// Pinned runs, faded and thinner, under their own labels: the selected particle's curves (the
+// aggregates' means in a scene of many particles).
+void add_pinned_lines(const LabSession& s, std::size_t particle, MotionSeries& out) {
+    const PinBoard* board = pins_if_any(s);
+    if (!board) return;
+    for (const PinnedRun& run : board->runs) {
+        const Rgba c = pin_color(run.number);
+        if (out.aggregated) {
+            out.lines[0].push_back({run.label, &run.aggregate.height_mean, c, 1.2f});
+            out.lines[1].push_back({run.label, &run.aggregate.speed_mean, c, 1.2f});
+            out.lines[2].push_back({run.label, &run.aggregate.kinetic_total, c, 1.2f});
+        } else if (particle < run.particles.size()) {
+            const PathSeries* path = particle < run.paths.size() ? &run.paths[particle] : nullptr;
+            for (int q = 0; q < 3; ++q)
+                out.lines[q].push_back({run.label, &particle_series(run.particles[particle], static_cast<Quantity>(q)), c, 1.2f,
+                                        &run.particles[particle], path});
+        }
+    }
 }
 
 // Which lines the motion plots show: per variant (the selected particle) when there are several
@@ -74,6 +122,7 @@ MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
             out.lines[1].push_back({name + "##max", &a.speed_max, faint, 1.0f});
             out.lines[2].push_back({name, &a.kinetic_total, c, 2.0f});
         }
+        add_pinned_lines(s, sel, out);
         return out;
     }
     std::vector<int> mark_index;  // (variant, particle) -> index into out.marks
@@ -83,7 +132,8 @@ MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
             const std::string name = variant_name(s, v);
             const Rgba c = series_color(static_cast<int>(v));
             for (int q = 0; q < 3; ++q)
-                out.lines[q].push_back({name, &particle_series(h.variants[v].particles[sel], static_cast<Quantity>(q)), c});
+                out.lines[q].push_back({name, &particle_series(h.variants[v].particles[sel], static_cast<Quantity>(q)), c, 1.5f,
+                                        &h.variants[v].particles[sel], &h.variants[v].paths[sel]});
             out.marks.push_back({name, {}, c});
         }
         for (const LoggedEvent& e : h.events)
@@ -96,13 +146,16 @@ MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
             const std::string name = "particle " + std::to_string(i);
             const Rgba c = series_color(static_cast<int>(i));
             const float width = i == sel && tracks.size() > 1 ? 2.5f : 1.5f;
-            for (int q = 0; q < 3; ++q) out.lines[q].push_back({name, &particle_series(tracks[i], static_cast<Quantity>(q)), c, width});
+            for (int q = 0; q < 3; ++q)
+                out.lines[q].push_back({name, &particle_series(tracks[i], static_cast<Quantity>(q)), c, width, &tracks[i],
+                                        &h.variants[0].paths[i]});
             out.marks.push_back({name, {}, c});
         }
         for (const LoggedEvent& e : h.events)
             if (e.event.particle < out.marks.size() && (e.event.kind == EventKind::bounce || e.event.kind == EventKind::rest))
                 out.marks[e.event.particle].times.push_back(e.event.t);
     }
+    add_pinned_lines(s, sel, out);
     return out;
 }
 
@@ -199,7 +252,10 @@ void motion_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
         plot::SetupXLink(&p.time_axis);
         plot::SetupLegendHidden(&p.hidden_series);
         for (const Band& b : ms.bands[q]) plot::PlotBand(b.label.c_str(), *b.lower, *b.upper, b.color);
-        for (const Line& l : ms.lines[q]) plot::PlotLine(l.label.c_str(), *l.series, l.color, l.thickness);
+        for (const Line& l : ms.lines[q]) {
+            plot::PlotLine(l.label.c_str(), *l.series, l.color, l.thickness);
+            if (l.track) plot::SetItemDetail([&l](double t) { return particle_state_at(*l.track, l.path, t); });
+        }
         if (p.show_event_markers)
             for (const Marks& m : ms.marks)
                 plot::PlotMarkers(m.label.c_str(), m.times.data(), nullptr, static_cast<int>(m.times.size()), m.color,

@@ -7,6 +7,8 @@ namespace pl::ui {
 
 // Control panel
 void draw_preset_section(LabSession& s);
+void draw_about_section(LabSession& s);  // the preset's description, in full
+void draw_runs_section(LabSession& s);   // pin the run, list and unpin pinned runs
 void draw_time_section(LabSession& s);
 void draw_launch_section(LabSession& s);
 void draw_scene_section(LabSession& s);
@@ -24,7 +26,8 @@ void draw_warnings_tab(LabSession& s);
 
 // Shared bits
 std::string variant_name(const LabSession& s, std::size_t v);  // label, or "variant N"
-std::size_t warning_count(const LabSession& s);
+std::size_t warning_count(const LabSession& s);  // warnings that put a number at risk (warning_risk.hpp)
+std::size_t note_count(const LabSession& s);     // the others: out of range with a negligible error
 // Records the last item's screen rectangle under `name` in s.widget_rects, if it is visible.
 void note_item_rect(LabSession& s, const std::string& name);
 // Saves the scene to `file`; false (and an error dialog) when it cannot.

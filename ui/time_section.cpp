@@ -51,8 +51,10 @@ void draw_time_section(LabSession& s) {
 
     SceneEditor ed(s);
     // The scene's fixed step (variants may override it); changing it restarts the run.
+    const ImVec2 dt_field = ImGui::GetCursorScreenPos();  // for the GUI tests (the help mark follows it)
     edit_field<IntegratorSettings>(ed, schema::integrator_rows[schema::row_index<IntegratorSettings>("dt")],
                                    [](Scene& sc) -> IntegratorSettings& { return sc.integrator; });
+    s.widget_rects["time.dt"] = {dt_field.x, dt_field.y, ImGui::CalcItemWidth(), ImGui::GetFrameHeight()};
 }
 
 void draw_launch_section(LabSession& s) {

@@ -1,8 +1,12 @@
 // Warnings tab: every warning every variant raised (once per particle and kind).
 #include "ui/sections.hpp"
+#include "ui/warning_risk.hpp"
+
+#include <fmt/format.h>
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,24 +25,29 @@ const char* kind_name(WarningKind k) {
 }
 constexpr std::size_t kind_count = static_cast<std::size_t>(WarningKind::mach) + 1;
 
-}  // namespace
+struct Row {
+    std::size_t variant;
+    const Warning* warning;
+    bool at_risk;
+};
 
-void draw_warnings_tab(LabSession& s) {
-    const Experiment& e = *s.experiment;
-    if (warning_count(s) == 0) {
-        ImGui::TextDisabled("No warnings: every particle stayed within its drag model's validity range, dt is within "
-                            "the method's stability limit, and no state became non-finite.");
-        return;
-    }
-    // Rows in variant and time order; in a scene of thousands of particles, a line per kind first
-    // says how many particles share a warning, which a scroll through the table cannot.
-    std::vector<std::pair<std::size_t, const Warning*>> rows;
-    std::size_t per_kind[kind_count] = {};
+// Rows in variant and time order, warnings at risk before notes, counted per kind.
+std::vector<Row> warning_rows(const Experiment& e, std::size_t (&per_kind)[kind_count], std::size_t& notes) {
+    std::vector<Row> rows;
     for (std::size_t v = 0; v < e.variant_count(); ++v)
         for (const Warning& w : e.run(v).warnings()) {
-            rows.emplace_back(v, &w);
-            ++per_kind[static_cast<std::size_t>(w.kind)];
+            const bool at_risk = puts_number_at_risk(w, e.run(v));
+            rows.push_back({v, &w, at_risk});
+            if (at_risk) ++per_kind[static_cast<std::size_t>(w.kind)];
+            else ++notes;
         }
+    std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.at_risk; });
+    return rows;
+}
+
+// In a scene of thousands of particles, a line per kind first says how many particles share a
+// warning, which a scroll through the table cannot.
+std::string summary_line(const std::size_t (&per_kind)[kind_count], std::size_t notes) {
     std::string summary;
     for (std::size_t k = 0; k < kind_count; ++k) {
         if (per_kind[k] == 0) continue;
@@ -46,7 +55,28 @@ void draw_warnings_tab(LabSession& s) {
         summary += std::string(kind_name(static_cast<WarningKind>(k))) + ": " + std::to_string(per_kind[k]) +
                    (per_kind[k] == 1 ? " particle" : " particles");
     }
+    if (notes) summary += (summary.empty() ? "No warnings at risk.   notes: " : "   notes: ") + std::to_string(notes);
+    return summary;
+}
+
+}  // namespace
+
+void draw_warnings_tab(LabSession& s) {
+    const Experiment& e = *s.experiment;
+    if (warning_count(s) == 0 && note_count(s) == 0) {
+        ImGui::TextDisabled("No warnings: every particle stayed within its drag model's validity range, dt is within "
+                            "the method's stability limit, and no state became non-finite.");
+        return;
+    }
+    std::size_t per_kind[kind_count] = {};
+    std::size_t notes = 0;
+    const std::vector<Row> rows = warning_rows(e, per_kind, notes);
+    const std::string summary = summary_line(per_kind, notes);
     ImGui::TextUnformatted(summary.c_str());
+    if (notes && ImGui::IsItemHovered())
+        ImGui::SetTooltip("A note: a particle left its drag model's Reynolds range where the model's drag differs from\n"
+                          "the smooth-sphere correlation by less than %.0f%% of gravity, so no number is at risk.",
+                          100.0 * negligible_drag_error);
     ImGui::SameLine();
     ImGui::TextDisabled("(once per particle and kind; click a row to inspect the particle)");
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY |
@@ -64,8 +94,9 @@ void draw_warnings_tab(LabSession& s) {
     clipper.Begin(static_cast<int>(rows.size()));
     while (clipper.Step()) {
         for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
-            const std::size_t v = rows[static_cast<std::size_t>(r)].first;
-            const Warning& w = *rows[static_cast<std::size_t>(r)].second;
+            const Row& row = rows[static_cast<std::size_t>(r)];
+            const std::size_t v = row.variant;
+            const Warning& w = *row.warning;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             const bool selected =
@@ -84,9 +115,12 @@ void draw_warnings_tab(LabSession& s) {
             ImGui::TableNextColumn();
             ImGui::Text("%u", w.particle);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(kind_name(w.kind));
+            ImGui::TextUnformatted(row.at_risk ? kind_name(w.kind) : "note");
             ImGui::TableNextColumn();
-            const std::string message = warning_message(w, e.run(v).model());
+            std::string message = warning_message(w, e.run(v).model());
+            if (!row.at_risk)
+                message += fmt::format("; its drag differs from Cd(Re) by {:.2g}% of gravity: no number at risk",
+                                       100.0 * drag_error_fraction(w, e.run(v)));
             ImGui::TextUnformatted(message.c_str());
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", message.c_str());
         }

@@ -62,4 +62,25 @@ double drag_stiffness(DragModel model, const DragCoefficients& c, double u) {
     return 0.0;
 }
 
+namespace {
+
+template <class Term>
+double rate_of(const DragCoefficients& c, double u) {
+    Term term;
+    term.drag = c;
+    return term.rate(Vec3(u, 0.0, 0.0));
+}
+
+}  // namespace
+
+double drag_rate(DragModel model, const DragCoefficients& c, double u) {
+    switch (model) {
+        case DragModel::none: return 0.0;
+        case DragModel::linear: return rate_of<terms::DragLinear>(c, u);
+        case DragModel::quadratic: return rate_of<terms::DragQuadratic>(c, u);
+        case DragModel::sphere_re: return rate_of<terms::DragSphereRe>(c, u);
+    }
+    return 0.0;
+}
+
 }  // namespace pl

@@ -39,5 +39,7 @@ ReRange drag_validity(DragModel model);
 // Effective linear decay rate k (1/s) of the drag at relative speed u: the quantity whose
 // product with dt decides explicit stability (k = b/m linear, 2 c|u|/m quadratic Jacobian).
 double drag_stiffness(DragModel model, const DragCoefficients& c, double rel_speed);
+// |a_drag| / |u| of the model at relative speed u (the terms' own rate; 0 without drag).
+double drag_rate(DragModel model, const DragCoefficients& c, double rel_speed);
 
 }  // namespace pl

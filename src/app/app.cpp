@@ -28,8 +28,7 @@ int run_gui(int argc, char** argv) {
     }
     ui::LabSession session;
     session.preset_dir = PL_PRESET_DIR;
-    session.apply_scene(*preset.scene);
-    session.preset_path = options.preset;
+    session.open_preset(*preset.scene, options.preset);
     if (options.time_scale) session.time_scale = *options.time_scale;
     session.status_message = "Loaded " + options.preset.filename().string();
     try {

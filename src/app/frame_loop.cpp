@@ -146,7 +146,8 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
     // After each group of base steps: trails, and the live metrics, which need every step.
     const AfterSteps after_steps = [&]() -> std::uint64_t {
         if (!session.experiment) return 1;
-        trails.sample(*session.experiment, static_cast<std::size_t>(std::max(session.selected_particle, 0)));
+        trails.sample(*session.experiment, static_cast<std::size_t>(std::max(session.selected_particle, 0)),
+                      static_cast<std::size_t>(std::max(session.trail_particles, 0)));
         return std::min(ui::record_step(session), trails.steps_until_due(*session.experiment));
     };
     PanelCollapse collapsed;
@@ -190,8 +191,9 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         // Panels, then the 3D view's overlays and input (the view is the space between panels).
         const ShellLayout layout = compute_layout(io.DisplaySize.x, io.DisplaySize.y, collapsed, layout_metrics());
         apply_view_command(draw_shell_windows(session, layout, collapsed), view, session);
-        const std::vector<ViewPane> panes =
-            view_panes(layout.view, session.split_view, session.experiment ? session.experiment->variant_count() : 1);
+        const std::size_t variant_count = session.experiment ? session.experiment->variant_count() : 1;
+        const std::vector<ViewPane> panes = view_panes(layout.view, session.split_view, variant_count,
+                                                       split_variants(session.split_variants, variant_count));
         const std::optional<HoveredParticle> hovered = handle_view_mouse(drag, view.camera, panes, session);
         draw_view_overlay(session, panes, view.camera, hovered);
         draw_launch_aim(drag.aim, session, panes, view.camera);

@@ -79,10 +79,20 @@ void SceneRenderer::draw_pane(const ui::LabSession& session, const TrailHistory&
     else spheres_.draw(cam, min_radius_per_depth);
 
     glDepthMask(GL_FALSE);
+    const auto selected = static_cast<std::size_t>(std::max(session.selected_particle, 0));
+    const auto trail_particles = static_cast<std::size_t>(std::max(session.trail_particles, 0));
     if (session.show_trails) {
         segments_.clear();
-        append_trails(trails, e, pane.variant, static_cast<std::size_t>(std::max(session.selected_particle, 0)), segments_);
+        append_trails(trails, e, pane.variant, selected, trail_particles, segments_);
         lines_.draw(segments_, cam.view_proj, viewport, 2.0f);
+    }
+    segments_.clear();
+    append_drop_lines(e, pane.variant, selected, trail_particles, segments_);
+    lines_.draw(segments_, cam.view_proj, viewport, 1.0f);
+    if (const ui::PinBoard* pins = ui::pins_if_any(session); pins && !pins->runs.empty()) {
+        segments_.clear();
+        append_pinned_paths(*pins, segments_);
+        lines_.draw(segments_, cam.view_proj, viewport, 1.5f);
     }
     if (session.show_velocity) {
         segments_.clear();

@@ -52,9 +52,8 @@ void run_to_next_event(ui::LabSession& s, const AfterSteps& after_step) {
 void relaunch(ui::LabSession& s) {
     Experiment& e = *s.experiment;
     if (e.runs().empty() || e.run(0).particle_count() == 0) return;
-    const Scene& running = e.scene();  // the panels' edits are not applied yet
-    const Vec3 start = running.particles.empty() ? initial_particles(running).front().position
-                                                 : running.particles.front().position;
+    // The running scene (the panels' edits are not applied yet).
+    const Vec3 start = ui::first_particle(e.scene()).value_or(ParticleSpec{}).position;
     for (std::size_t v = 0; v < e.variant_count(); ++v) relaunch_particle(e.run(v), 0, start, s.launch_velocity);
     s.status_message = fmt::format("Launched particle 0 at ({:.3g}, {:.3g}, {:.3g}) m/s", s.launch_velocity.x,
                                    s.launch_velocity.y, s.launch_velocity.z);

@@ -1,6 +1,7 @@
 #include "app/shortcuts.hpp"
 
 #include "ui/lab_ui.hpp"
+#include "ui/pinned_runs.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -50,6 +51,7 @@ ViewCommand apply_shortcuts(const std::vector<KeyPress>& keys, bool text_input_a
             case GLFW_KEY_R: s.requests.reset = true; break;
             case GLFW_KEY_N: s.requests.single_step = true; break;
             case GLFW_KEY_L: s.requests.relaunch = true; break;
+            case GLFW_KEY_P: s.status_message = ui::pin_current_run(s); break;
             case GLFW_KEY_F1:
             case GLFW_KEY_H: s.show_help = !s.show_help; break;
             case GLFW_KEY_F: view.focus_selected = true; break;

@@ -2,7 +2,10 @@
 
 #include "app/picking.hpp"
 #include "io/metrics_json.hpp"
+#include "ui/pinned_runs.hpp"
 #include "ui/plot_history.hpp"
+#include "ui/sections.hpp"
+#include "ui/warning_risk.hpp"
 
 #include <imgui.h>
 #include <nlohmann/json.hpp>
@@ -69,6 +72,36 @@ nlohmann::json aim_json(const ui::LabSession& s, const ViewSnapshot& view) {
             {"tip_screen", on_screen(anchor + aim.velocity * arrow_time_s)}};
 }
 
+// The first few warnings at risk, in the Warnings tab's order.
+nlohmann::json warnings_json(const ui::LabSession& s) {
+    nlohmann::json warnings = nlohmann::json::array();
+    if (s.experiment)
+        for (std::size_t v = 0; v < s.experiment->variant_count() && warnings.size() < 8; ++v)
+            for (const Warning& w : s.experiment->run(v).warnings()) {
+                if (warnings.size() == 8) break;
+                if (ui::puts_number_at_risk(w, s.experiment->run(v)))
+                    warnings.push_back({{"variant", v}, {"particle", w.particle}});
+            }
+    return warnings;
+}
+
+// Pinned runs, oldest first, with the metrics of the selected particle (null without) and the
+// samples of each particle's ghost path.
+nlohmann::json pinned_json(const ui::LabSession& s, std::size_t selected) {
+    nlohmann::json pinned = nlohmann::json::array();
+    if (const ui::PinBoard* board = ui::pins_if_any(s))
+        for (const ui::PinnedRun& run : board->runs) {
+            nlohmann::json metrics = nullptr;
+            if (run.metrics && selected < run.metrics->particles.size())
+                metrics = cli::particle_metrics_json(run.metrics->particles[selected]);
+            nlohmann::json paths = nlohmann::json::array();
+            for (const ui::PathSeries& path : run.paths) paths.push_back(path.size());
+            pinned.push_back({{"number", run.number}, {"label", run.label}, {"t_end", run.t_end}, {"metrics", metrics},
+                              {"path_samples", paths}});
+        }
+    return pinned;
+}
+
 }  // namespace
 
 std::string write_state_dump(const std::filesystem::path& file, const ui::LabSession& s, long frames,
@@ -90,7 +123,11 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     j["text_input"] = ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantTextInput;
     const OrbitCamera& c = view.camera;
     nlohmann::json panes = nlohmann::json::array();
-    for (const ViewPane& p : view.panes) panes.push_back({p.rect.x, p.rect.y, p.rect.w, p.rect.h});
+    nlohmann::json pane_variants = nlohmann::json::array();  // null: a pane of every variant overlaid
+    for (const ViewPane& p : view.panes) {
+        panes.push_back({p.rect.x, p.rect.y, p.rect.w, p.rect.h});
+        pane_variants.push_back(p.variant ? nlohmann::json(*p.variant) : nlohmann::json(nullptr));
+    }
     j["view"] = {{"trails", s.show_trails},
                  {"velocity", s.show_velocity},
                  {"wind", s.show_wind},
@@ -101,18 +138,14 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
                  {"right", vec3(Vec3(camera_right(c)))},
                  {"up", vec3(Vec3(camera_up(c)))},
                  {"panes", panes},
+                 {"pane_variants", pane_variants},
                  {"aim", aim_json(s, view)}};
     nlohmann::json widgets = nlohmann::json::object();
     for (const auto& [name, r] : s.widget_rects) widgets[name] = {r[0], r[1], r[2], r[3]};
     j["widgets"] = widgets;
-    nlohmann::json warnings = nlohmann::json::array();  // the first few, in the Warnings tab's order
-    if (s.experiment)
-        for (std::size_t v = 0; v < s.experiment->variant_count() && warnings.size() < 8; ++v)
-            for (const Warning& w : s.experiment->run(v).warnings()) {
-                if (warnings.size() == 8) break;
-                warnings.push_back({{"variant", v}, {"particle", w.particle}});
-            }
-    j["warnings"] = warnings;
+    j["warnings"] = warnings_json(s);
+    j["warning_count"] = ui::warning_count(s);  // at risk; notes: out of range, error negligible
+    j["note_count"] = ui::note_count(s);
     // The Compare tab's live metrics of the selected particle, one object per variant (null
     // without live metrics), named as `particle-lab compare --json` names them.
     nlohmann::json live = nullptr;
@@ -126,6 +159,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
         }
     }
     j["live_metrics"] = live;
+    j["pinned_runs"] = pinned_json(s, selected);
     j["t"] = s.experiment ? s.experiment->time() : 0.0;
     j["base_steps"] = s.experiment ? s.experiment->base_steps() : 0;
     nlohmann::json variants = nlohmann::json::array();

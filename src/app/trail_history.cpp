@@ -35,7 +35,7 @@ std::uint64_t TrailHistory::steps_until_due(const Experiment& e) const {
     return k;
 }
 
-void TrailHistory::sample(const Experiment& e, std::size_t selected_particle) {
+void TrailHistory::sample(const Experiment& e, std::size_t selected_particle, std::size_t per_variant) {
     sync(&e);
     const double t = e.time();
     if (last_sample_t_ >= 0.0 && t - last_sample_t_ < sample_interval_s) return;
@@ -49,7 +49,7 @@ void TrailHistory::sample(const Experiment& e, std::size_t selected_particle) {
             trail.head = (trail.head + 1) % capacity;
             trail.count = std::min(trail.count + 1, capacity);
         };
-        const std::size_t tracked = std::min(s.size(), tracked_per_variant);
+        const std::size_t tracked = std::min({s.size(), per_variant, max_per_variant});
         for (std::size_t i = 0; i < tracked; ++i) record(i);
         if (selected_particle >= tracked && selected_particle < s.size()) record(selected_particle);
     }

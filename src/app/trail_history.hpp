@@ -1,5 +1,6 @@
-// Recent positions of the tracked particles (the first few of every variant, plus the selected
-// one), sampled in simulated time so a trail's shape does not depend on the frame rate.
+// Recent positions of the tracked particles (the first N of every variant, N chosen in the view
+// toolbar, plus the selected one), sampled in simulated time so a trail's shape does not depend
+// on the frame rate.
 #pragma once
 
 #include "physics/stepping/experiment.hpp"
@@ -22,16 +23,17 @@ struct Trail {
 
 class TrailHistory {
 public:
-    static constexpr std::size_t tracked_per_variant = 4;
-    static constexpr std::size_t max_variants = 8;
+    static constexpr std::size_t max_per_variant = 256;  // the most trails the toolbar offers per variant
+    static constexpr std::size_t max_variants = 16;
     static constexpr std::size_t capacity = 1600;      // samples per trail (8 s)
     static constexpr double sample_interval_s = 1.0 / 200.0;  // simulated seconds between samples
 
     // Starts over when the experiment was replaced or went back in time (reset, load).
     void sync(const Experiment* experiment);
     void clear();
-    // Records the tracked particles if a sample interval has passed since the last sample.
-    void sample(const Experiment& experiment, std::size_t selected_particle);
+    // Records the first `per_variant` particles of each variant and the selected one, if a sample
+    // interval has passed since the last sample.
+    void sample(const Experiment& experiment, std::size_t selected_particle, std::size_t per_variant);
     // Base steps from now after which sample() records again (at least 1, at most 64).
     std::uint64_t steps_until_due(const Experiment& experiment) const;
     const std::vector<Trail>& trails() const { return trails_; }

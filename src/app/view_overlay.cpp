@@ -230,6 +230,13 @@ void draw_view_overlay(const ui::LabSession& session, const std::vector<ViewPane
         draw_axis_gizmo(dl, cam, r);
         if (e.variant_count() > 1) draw_legend(dl, r, e, pane.variant);
         if (k == top_right) draw_time_badge(dl, r, session);
+        if (k == top_right && pane.variant && panes.size() < e.variant_count()) {
+            // Say that some variants have no pane, under the time badge.
+            char text[96];
+            std::snprintf(text, sizeof text, "%zu of %zu variants shown", panes.size(), e.variant_count());
+            const ImVec2 size = ImGui::CalcTextSize(text);
+            shadowed_text(dl, ImVec2(r.right() - size.x - 12.0f, r.y + 2.6f * size.y + 8.0f), IM_COL32(250, 205, 100, 255), text);
+        }
         if (session.show_wind) draw_wind_caption(dl, r, e, pane.variant, selected_variant);
         // Selection: in a split pane the selected particle of that pane's variant.
         const std::size_t ring_variant = pane.variant.value_or(selected_variant);

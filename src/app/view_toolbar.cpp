@@ -1,10 +1,16 @@
 #include "app/view_toolbar.hpp"
 
 #include "app/renderer_arrows.hpp"
+#include "app/trail_history.hpp"
+#include "app/view_panes.hpp"
+#include "ui/sections.hpp"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace pl::app {
 
@@ -43,12 +49,46 @@ const char* wind_note(const Experiment& e) {
     return "";
 }
 
+// Which variants fill the split view's panes: a checkbox per variant, at most max_split_panes.
+void pane_chooser(ui::LabSession& s) {
+    const std::size_t count = s.experiment->variant_count();
+    const std::vector<std::size_t> shown = split_variants(s.split_variants, count);
+    ImGui::SameLine(0.0f, 2.0f);
+    const std::string label = std::to_string(shown.size()) + "/" + std::to_string(count) + "###panes";
+    if (ImGui::Button(label.c_str())) ImGui::OpenPopup("##pane_choice");
+    ui::note_item_rect(s, "view.panes");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Variants shown in the split view (up to %zu)", max_split_panes);
+    if (!ImGui::BeginPopup("##pane_choice")) return;
+    for (std::size_t v = 0; v < count; ++v) {
+        bool on = std::find(shown.begin(), shown.end(), v) != shown.end();
+        ImGui::BeginDisabled((!on && shown.size() >= max_split_panes) || (on && shown.size() == 1));
+        if (ImGui::Checkbox(ui::variant_name(s, v).c_str(), &on)) {
+            std::vector<int> next;
+            for (std::size_t k : shown)
+                if (k != v) next.push_back(static_cast<int>(k));
+            if (on) next.push_back(static_cast<int>(v));
+            s.split_variants = next;
+        }
+        ImGui::EndDisabled();
+        ui::note_item_rect(s, "view.pane." + std::to_string(v));
+    }
+    ImGui::EndPopup();
+}
+
 }  // namespace
 
 ViewCommand draw_view_toolbar(ui::LabSession& s) {
     ViewCommand cmd;
     char tip[256];
     toggle_button("Trails", s.show_trails, "Fading trails of the first particles of each variant and the selected one");
+    ImGui::SameLine(0.0f, 2.0f);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 2.6f);
+    if (ImGui::DragInt("##trail_particles", &s.trail_particles, 0.2f, 0, static_cast<int>(TrailHistory::max_per_variant), "%d",
+                       ImGuiSliderFlags_AlwaysClamp))
+        s.trail_particles = std::clamp(s.trail_particles, 0, static_cast<int>(TrailHistory::max_per_variant));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Particles of each variant with a trail and a drop line to the floor (drag or double-click to\n"
+                          "type; the selected particle always has them)");
     ImGui::SameLine();
     const Room room = s.experiment ? s.experiment->scene().room : Room{};
     std::snprintf(tip, sizeof tip, "Velocity arrows: each shows the distance covered in %.2g s", velocity_arrow_time_s(room));
@@ -60,10 +100,12 @@ ViewCommand draw_view_toolbar(ui::LabSession& s) {
     ImGui::SameLine();
     const bool single = !s.experiment || s.experiment->variant_count() < 2;
     ImGui::BeginDisabled(single);
-    toggle_button("Split", s.split_view, "One pane per variant (up to four), same camera");
+    toggle_button("Split", s.split_view, "One pane per variant (up to nine, chosen with the button beside it), same camera");
+    ui::note_item_rect(s, "view.split");
     ImGui::EndDisabled();
     if (single && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("Split view needs a preset with several variants");
+    if (s.split_view && !single) pane_chooser(s);
 
     ImGui::SameLine(0.0f, 18.0f);
     // The camera buttons in a row when they fit, otherwise behind one "View" button.

@@ -167,3 +167,10 @@ widget_center() {
     local state=$1 name=$2
     json_get "$state" "' '.join(str(round(d['widgets']['$name'][k] + d['widgets']['$name'][k + 2] / 2)) for k in (0, 1))"
 }
+
+# Clicks the centre of a widget the app listed in the state dump `state` (see widget_center).
+click_widget() {
+    local state=$1 name=$2 x y
+    read -r x y < <(widget_center "$state" "$name")
+    xdotool mousemove --window "$APP_WINDOW" "$x" "$y" click 1
+}
