@@ -1,7 +1,8 @@
 // particle-lab run: every variant in lockstep; trajectory and events CSV, or a summary.
 #include "cli/cli_support.hpp"
 
-#include "io/csv_writer.hpp"
+#include "cli/run_outputs.hpp"
+#include "io/trajectory_table.hpp"
 #include "physics/stepping/energy.hpp"
 #include "physics/studies/metrics.hpp"
 #include "physics/stepping/simulation.hpp"
@@ -19,31 +20,10 @@ namespace {
 
 struct RunOptions {
     std::string preset;
+    std::vector<std::string> sets;  // --set KEY=VALUE
     double duration_s = 5.0;
-    std::string out, events;
-    std::uint64_t every = 1;
+    RunOutputSpec output;
 };
-
-void write_state_rows(CsvWriter& csv, const Simulation& sim, const std::string& variant, double t) {
-    const ParticleState& s = sim.state();
-    const double floor_y = sim.model().room.floor_y();
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const Vec3 v = s.velocity(i);
-        csv.field(t).field(variant).field(static_cast<std::uint64_t>(i));
-        csv.field(s.x[i]).field(s.y[i]).field(s.z[i]).field(v.x).field(v.y).field(v.z);
-        csv.field(glm::length(v)).field(s.y[i] - floor_y).field(kinetic_energy(s.mass[i], v));
-        csv.end_row();
-    }
-}
-
-void write_event_rows(CsvWriter& csv, const std::vector<Event>& events, const std::string& variant) {
-    for (const Event& e : events) {
-        csv.field(e.t).field(variant).field(static_cast<std::uint64_t>(e.particle));
-        csv.field(e.wall >= 0 ? wall_name(e.wall) : "");
-        csv.field(e.speed_in).field(e.speed_out).field(to_string(e.kind));
-        csv.end_row();
-    }
-}
 
 // Warnings are raised once per particle and kind; a big scene can still raise thousands, so at
 // most `per_kind` of each kind are printed, followed by how many more there were.
@@ -93,55 +73,35 @@ void print_summary(const Scene& scene, const std::vector<Simulation>& sims, cons
 }
 
 int run(const RunOptions& o) {
-    const std::optional<Scene> scene = load_scene("run", o.preset);
+    const std::optional<Scene> scene = load_scene("run", o.preset, o.sets);
     if (!scene) return exit_bad_input;
     const DurationPlan plan = plan_duration(*scene, o.duration_s);
     if (!plan.error.empty()) {
         print_error("run", "--duration: " + plan.error);
         return exit_bad_input;
     }
-    std::ofstream traj_file, events_file;
-    std::unique_ptr<CsvWriter> traj, events;
-    if (!o.out.empty()) {
-        traj_file.open(o.out, std::ios::binary);
-        if (!traj_file) {
-            print_error("run", fmt::format("--out: cannot open '{}' for writing", o.out));
-            return exit_runtime_failure;
-        }
-        traj = std::make_unique<CsvWriter>(traj_file);
-        for (const char* h : {"t", "variant", "particle", "x", "y", "z", "vx", "vy", "vz", "speed", "height", "kinetic_energy"})
-            traj->field(h);
-        traj->end_row();
-    }
-    if (!o.events.empty()) {
-        events_file.open(o.events, std::ios::binary);
-        if (!events_file) {
-            print_error("run", fmt::format("--events: cannot open '{}' for writing", o.events));
-            return exit_runtime_failure;
-        }
-        events = std::make_unique<CsvWriter>(events_file);
-        for (const char* h : {"t", "variant", "particle", "wall", "speed_in", "speed_out", "kind"}) events->field(h);
-        events->end_row();
-    }
-
     const std::vector<ParticleSpec> particles = initial_particles(*scene);
+    RunOutputs outputs;
+    if (const int code = outputs.open(o.output, particles.size(), plan.base_steps, variant_count(*scene)); code != exit_ok)
+        return code;
+
     std::vector<Simulation> sims;
-    std::vector<std::string> names;
+    std::vector<std::string> labels;  // in CSV the label itself (empty when none), beside variant_index
     for (std::size_t v = 0; v < variant_count(*scene); ++v) {
         sims.emplace_back(model_for_variant(*scene, v), particles);
         sims.back().set_threads(hardware_threads());  // explicit: no hardware query per step
-        names.push_back(variant_name(*scene, v));
+        labels.push_back(variant_label(*scene, v));
     }
     std::vector<std::uint64_t> written_step(sims.size(), 0);
     std::vector<std::array<std::uint64_t, 5>> event_counts(sims.size(), {0, 0, 0, 0, 0});
-    if (traj)
-        for (std::size_t v = 0; v < sims.size(); ++v) write_state_rows(*traj, sims[v], names[v], 0.0);
+    if (outputs.trajectory())
+        for (std::size_t v = 0; v < sims.size(); ++v) outputs.write_states(sims[v], labels[v], v);
 
-    Progress progress("run");
+    Progress progress("run", plan.base_steps, "steps");
     // Every variant advances from one output point to the next in one step_n, which lets the
     // kernel take several steps per call (much faster for large scenes). Output points: every
     // K-th base step when writing CSV (K = --every), else every 256 for the progress line.
-    const std::uint64_t stride = traj || events ? std::max<std::uint64_t>(o.every, 1) : 256;
+    const std::uint64_t stride = outputs.trajectory() || outputs.events() ? std::max<std::uint64_t>(o.output.every, 1) : 256;
     for (std::uint64_t k = std::min(stride, plan.base_steps);; k = std::min(k + stride, plan.base_steps)) {
         const bool last = k == plan.base_steps;
         for (std::size_t v = 0; v < sims.size(); ++v) {
@@ -151,34 +111,22 @@ int run(const RunOptions& o) {
             if (taken == 0 && !last) continue;
             const std::vector<Event> new_events = sims[v].drain_events();
             for (const Event& e : new_events) ++event_counts[v][static_cast<std::size_t>(e.kind)];
-            if (events) write_event_rows(*events, new_events, names[v]);
-            if (traj && (taken > before_k || last) && sims[v].step_count() != written_step[v]) {
-                // The last state is at exactly t = duration (plan_duration checked every dt divides it).
-                write_state_rows(*traj, sims[v], names[v], last ? o.duration_s : sims[v].time());
+            if (outputs.events()) outputs.write_events(new_events, labels[v], v);
+            if (outputs.trajectory() && (taken > before_k || last) && sims[v].step_count() != written_step[v]) {
+                // The last state is at t = duration (plan_duration checked every dt divides it).
+                outputs.write_states(sims[v], labels[v], v);
                 written_step[v] = sims[v].step_count();
             }
         }
-        progress.update(static_cast<double>(k) / static_cast<double>(plan.base_steps));
+        progress.update_count(k);
         if (last) break;
     }
     progress.done();
-    if (traj_file.is_open()) {
-        traj_file.close();
-        if (!traj_file) {
-            print_error("run", fmt::format("--out: writing '{}' failed", o.out));
-            return exit_runtime_failure;
-        }
-    }
-    if (events_file.is_open()) {
-        events_file.close();
-        if (!events_file) {
-            print_error("run", fmt::format("--events: writing '{}' failed", o.events));
-            return exit_runtime_failure;
-        }
-    }
-    if (o.out.empty()) {
+    if (const int code = outputs.close(); code != exit_ok) return code;
+    // The summary goes to standard output unless an output does; then only the warnings remain.
+    if (!outputs.trajectory() && !outputs.to_stdout()) {
         print_summary(*scene, sims, event_counts);
-    } else {
+    } else if (!quiet()) {
         for (const Simulation& sim : sims)
             print_warnings(sim, stderr, fmt::format("particle-lab run: warning ({}): ", sim.model().label));
     }
@@ -194,17 +142,22 @@ void add_run_command(CLI::App& app, int& exit_code) {
         "Run a preset headless: every variant in lockstep for --duration seconds.\n"
         "Writes the trajectory CSV (--out) and the events CSV (--events); without --out prints a\n"
         "summary per variant: time, steps, events, energy ledger, force evaluations, warnings.");
-    cmd->add_option("PRESET", o->preset, "preset JSON file")->required();
+    cmd->add_option("PRESET", o->preset, "preset JSON file (-: standard input)")->required();
+    add_set_option(cmd, o->sets);
     cmd->add_option("--duration", o->duration_s, "simulated seconds; a whole number of every variant's steps")
         ->capture_default_str()
         ->check(positive_number());
-    cmd->add_option("--out", o->out,
-                    "trajectory CSV: t,variant,particle,x,y,z,vx,vy,vz,speed,height,kinetic_energy\n"
-                    "(initial state, every K-th step, final state at t = duration)");
-    cmd->add_option("--events", o->events, "events CSV: t,variant,particle,wall,speed_in,speed_out,kind");
-    cmd->add_option("--every", o->every, "write every K-th base step to --out")
+    cmd->add_option("--out", o->output.out,
+                    "trajectory CSV (-: standard output; NAME.npy: NumPy binary, see docs/cli.md):\n" +
+                        trajectory_column_names() +
+                        "\n(initial state, every K-th step, final state at t = duration; t_s = step x dt)");
+    cmd->add_option("--events", o->output.events, std::string("events CSV (-: standard output):\n") + event_columns);
+    cmd->add_option("--particles", o->output.particles, "write only these particles to --out and --events, e.g. 0,3-5")
+        ->type_name("LIST");
+    cmd->add_option("--every", o->output.every, "write every K-th base step to --out")
         ->capture_default_str()
         ->check(positive_integer());
+    add_quiet_flag(cmd);
     cmd->callback([o, &exit_code] { exit_code = run(*o); });
 }
 
