@@ -4,6 +4,12 @@ namespace pl::cli {
 
 using Json = nlohmann::ordered_json;
 
+Json json_document() {
+    Json j;
+    j["schema_version"] = json_schema_version;
+    return j;
+}
+
 Json optional_json(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
 
 Json particle_metrics_json(const ParticleMetrics& p) {

@@ -10,6 +10,11 @@
 
 namespace pl::cli {
 
+// Every JSON document the CLI prints starts with "schema_version": bumped when a key is renamed
+// or removed (2: unit suffixes on every dimensional key, e.g. dt_s, position_error_m).
+constexpr int json_schema_version = 2;
+nlohmann::ordered_json json_document();  // {"schema_version": json_schema_version}
+
 nlohmann::ordered_json optional_json(const std::optional<double>& v);
 nlohmann::ordered_json particle_metrics_json(const ParticleMetrics& p);
 

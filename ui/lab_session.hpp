@@ -65,7 +65,7 @@ struct LabSession {
     std::shared_ptr<PlotHistory> history;      // created by the ui on first use
     std::shared_ptr<PanelState> panels;        // created by the ui on first use
     std::shared_ptr<PinBoard> pins;            // created by the ui on first pin; survives loads and edits
-    std::filesystem::path preset_dir;          // shipped presets (the shell sets PL_PRESET_DIR)
+    std::filesystem::path preset_dir;          // shipped presets (the shell finds them: app/data_dir.hpp)
 
     // 3D view options (the shell's view toolbar edits them; panels may too).
     bool show_trails = true;

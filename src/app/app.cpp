@@ -1,5 +1,6 @@
 #include "app/app.hpp"
 
+#include "app/data_dir.hpp"
 #include "app/frame_loop.hpp"
 #include "app/gui_options.hpp"
 #include "io/preset_io.hpp"
@@ -7,9 +8,6 @@
 
 #include <cstdio>
 
-#ifndef PL_PRESET_DIR
-#define PL_PRESET_DIR "presets"
-#endif
 #include <exception>
 
 namespace pl::app {
@@ -27,7 +25,7 @@ int run_gui(int argc, char** argv) {
         return 2;
     }
     ui::LabSession session;
-    session.preset_dir = PL_PRESET_DIR;
+    session.preset_dir = data_path("presets");
     session.open_preset(*preset.scene, options.preset);
     if (options.time_scale) session.time_scale = *options.time_scale;
     session.status_message = "Loaded " + options.preset.filename().string();

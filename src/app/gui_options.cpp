@@ -1,10 +1,8 @@
 #include "app/gui_options.hpp"
 
-#include <CLI/CLI.hpp>
+#include "app/data_dir.hpp"
 
-#ifndef PL_PRESET_DIR
-#define PL_PRESET_DIR "presets"
-#endif
+#include <CLI/CLI.hpp>
 
 namespace pl::app {
 
@@ -16,7 +14,7 @@ ParsedGuiOptions parse_gui_options(int argc, char** argv) {
     long frames = 0;
     std::string screenshot, dump_state;
     double time_scale = 1.0, fixed_dt = 0.0;
-    app.add_option("preset", preset, "Preset JSON to open (default: presets/default.json)");
+    app.add_option("preset", preset, "Preset JSON to open (default: presets/default.json in the data folder)");
     auto* frames_opt = app.add_option("--frames", frames, "Exit after N frames")->check(CLI::PositiveNumber);
     auto* shot_opt = app.add_option("--screenshot", screenshot, "Write a PNG of the last frame to this file");
     auto* dump_opt = app.add_option("--dump-state", dump_state, "Write the state as JSON at exit (and on SIGUSR1)");
@@ -31,7 +29,7 @@ ParsedGuiOptions parse_gui_options(int argc, char** argv) {
         const int code = app.exit(e);
         return {std::nullopt, code == 0 ? 0 : 2};
     }
-    o.preset = preset.empty() ? std::filesystem::path(PL_PRESET_DIR) / "default.json" : std::filesystem::path(preset);
+    o.preset = preset.empty() ? data_path("presets") / "default.json" : std::filesystem::path(preset);
     if (*frames_opt) o.frames = frames;
     if (*shot_opt) o.screenshot = screenshot;
     if (*dump_opt) o.dump_state = dump_state;

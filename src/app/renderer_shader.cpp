@@ -1,15 +1,13 @@
 #include "app/renderer_shader.hpp"
 
+#include "app/data_dir.hpp"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
-
-#ifndef PL_SHADER_DIR
-#define PL_SHADER_DIR ""
-#endif
 
 namespace pl::app {
 
@@ -44,13 +42,7 @@ GLuint compile_stage(GLenum stage, const std::filesystem::path& file) {
 
 }  // namespace
 
-std::filesystem::path shader_directory() {
-    const std::filesystem::path built_in = PL_SHADER_DIR;
-    std::error_code ec;
-    if (!built_in.empty() && std::filesystem::is_directory(built_in, ec)) return built_in;
-    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    return ec ? std::filesystem::path("shaders") : exe.parent_path() / "shaders";
-}
+std::filesystem::path shader_directory() { return data_path("shaders"); }
 
 ShaderProgram load_program(const std::string& name, bool with_geometry) {
     const std::filesystem::path dir = shader_directory();

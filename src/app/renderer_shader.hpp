@@ -12,8 +12,7 @@
 
 namespace pl::app {
 
-// The directory holding the GLSL files: PL_SHADER_DIR (the source tree, set at build time) when
-// it exists, otherwise `shaders/` next to the executable (an installed copy).
+// The directory holding the GLSL files: shaders/ in the data folder (app/data_dir.hpp).
 std::filesystem::path shader_directory();
 
 class ShaderProgram {

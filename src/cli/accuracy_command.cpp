@@ -2,6 +2,7 @@
 #include "cli/cli_support.hpp"
 #include "cli/resource_check.hpp"
 
+#include "io/metrics_json.hpp"
 #include "physics/studies/accuracy_study.hpp"
 #include "io/csv_writer.hpp"
 
@@ -17,6 +18,7 @@ namespace {
 
 struct AccuracyCliOptions {
     std::string preset;
+    std::vector<std::string> sets;  // --set KEY=VALUE
     std::string methods, dts, tolerances, variant;
     double duration_s = 2.0;
     std::size_t particle = 0;
@@ -34,8 +36,8 @@ std::optional<double> order_of(const AccuracyReport& r, Method m) {
 
 void print_csv(const AccuracyReport& r) {
     CsvWriter csv(std::cout);
-    for (const char* h : {"method", "adaptive", "dt", "tol", "steps", "force_evaluations", "wall_seconds_per_sim_second",
-                          "position_error", "velocity_error", "bounce_time_error", "impacts", "impacts_matched",
+    for (const char* h : {"method", "adaptive", "dt_s", "tol", "steps", "force_evaluations", "wall_s_per_simulated_s",
+                          "position_error_m", "velocity_error_m_s", "bounce_time_error_s", "impacts", "impacts_matched",
                           "reference_impacts", "observed_order"})
         csv.field(h);
     csv.end_row();
@@ -57,7 +59,7 @@ void print_csv(const AccuracyReport& r) {
 }
 
 void print_json(const AccuracyReport& r, const std::string& preset) {
-    Json j;
+    Json j = json_document();
     j["preset"] = preset;
     j["variant"] = r.variant_label;
     j["particle"] = r.particle;
@@ -69,14 +71,14 @@ void print_json(const AccuracyReport& r, const std::string& preset) {
         Json x;
         x["method"] = to_string(row.method);
         x["adaptive"] = row.adaptive;
-        x["dt"] = row.dt;
+        x["dt_s"] = row.dt;
         x["tol"] = row.adaptive ? Json(row.tolerance) : Json(nullptr);
         x["steps"] = row.steps;
         x["force_evaluations"] = row.force_evaluations;
-        x["wall_seconds_per_sim_second"] = row.wall_seconds_per_sim_second;
-        x["position_error"] = row.position_error;
-        x["velocity_error"] = row.velocity_error;
-        x["bounce_time_error"] = row.bounce_time_error ? Json(*row.bounce_time_error) : Json(nullptr);
+        x["wall_s_per_simulated_s"] = row.wall_seconds_per_sim_second;
+        x["position_error_m"] = row.position_error;
+        x["velocity_error_m_s"] = row.velocity_error;
+        x["bounce_time_error_s"] = row.bounce_time_error ? Json(*row.bounce_time_error) : Json(nullptr);
         x["impacts"] = row.impacts;
         x["impacts_matched"] = row.impacts_matched;
         rows.push_back(x);
@@ -131,7 +133,7 @@ int accuracy(const AccuracyCliOptions& o) {
         print_error("accuracy", error);
         return exit_bad_input;
     }
-    const std::optional<Scene> scene = load_scene("accuracy", o.preset);
+    const std::optional<Scene> scene = load_scene("accuracy", o.preset, o.sets);
     if (!scene) return exit_bad_input;
     if (!o.variant.empty()) {
         const std::optional<std::size_t> found = find_variant(*scene, o.variant);
@@ -173,7 +175,8 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
         "(closed form where one exists, else dopri5 at rtol = atol = 1e-12). Prints steps, force\n"
         "evaluations, wall time per simulated second, position/velocity error at the end, bounce-time\n"
         "error, and each method's observed order.");
-    cmd->add_option("PRESET", o->preset, "preset JSON file")->required();
+    cmd->add_option("PRESET", o->preset, "preset JSON file (-: standard input)")->required();
+    add_set_option(cmd, o->sets);
     cmd->add_option("--methods", o->methods,
                     "comma-separated methods (default: all): explicit_euler, semi_implicit_euler,\n"
                     "velocity_verlet, rk4, dopri5, exponential");
@@ -188,6 +191,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
     auto* csv = cmd->add_flag("--csv", o->csv, "print CSV (full precision)");
     auto* json = cmd->add_flag("--json", o->json, "print JSON");
     csv->excludes(json);
+    add_quiet_flag(cmd);
     cmd->callback([o, &exit_code] { exit_code = accuracy(*o); });
 }
 

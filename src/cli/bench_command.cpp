@@ -2,14 +2,17 @@
 // hash of the final positions so speed and determinism are checked together.
 #include "cli/cli_support.hpp"
 
+#include "io/json_csv.hpp"
 #include "physics/stepping/simulation.hpp"
 #include "physics/stepping/thread_pool.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <charconv>
 #include <chrono>
 #include <cstring>
+#include <iostream>
 #include <memory>
 
 namespace pl::cli {
@@ -17,7 +20,7 @@ namespace pl::cli {
 namespace {
 
 struct BenchOptions {
-    bool quick = false;
+    bool quick = false, csv = false;
     std::string threads = "1";
 };
 
@@ -82,11 +85,7 @@ int bench(const BenchOptions& o) {
     const double particle_steps = o.quick ? 5e4 : 2e6;
     const std::vector<Method> methods = {Method::explicit_euler, Method::semi_implicit_euler, Method::velocity_verlet,
                                          Method::rk4,            Method::dopri5,              Method::exponential};
-    std::printf("particle-steps per second: dt = 0.005 s, %s particle-steps (at least 5 steps) per row after one\n"
-                "untimed warm-up step; the hash covers the final positions and must not depend on the thread count\n\n",
-                sig(particle_steps, 2).c_str());
-    Table t;
-    t.header = {"scene", "method", "particles", "threads", "steps", "seconds", "particle-steps/s", "state hash (FNV-1a)"};
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     Progress progress("bench");
     const std::size_t total = sizes.size() * 2 * methods.size() * thread_counts.size();
     std::size_t done = 0;
@@ -104,17 +103,30 @@ int bench(const BenchOptions& o) {
                     const auto start = std::chrono::steady_clock::now();
                     sim.step_n(steps);
                     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                    t.rows.push_back({b.name, to_string(m), std::to_string(n),
-                                      threads == 0 ? fmt::format("all ({})", hardware_threads()) : std::to_string(threads),
-                                      std::to_string(steps), sig(seconds, 3),
-                                      sig(static_cast<double>(n) * static_cast<double>(steps) / seconds, 3),
-                                      fmt::format("{:016x}", position_hash(sim.state()))});
+                    rows.push_back({{"scene", b.name}, {"method", to_string(m)}, {"particles", n},
+                                    {"threads", threads == 0 ? hardware_threads() : static_cast<std::size_t>(threads)},
+                                    {"steps", steps}, {"wall_s", seconds},
+                                    {"particle_steps_per_s", static_cast<double>(n) * static_cast<double>(steps) / seconds},
+                                    {"state_hash_fnv1a", fmt::format("{:016x}", position_hash(sim.state()))}});
                     progress.update(static_cast<double>(++done) / static_cast<double>(total));
                 }
             }
         }
     }
     progress.done();
+    if (o.csv) {
+        write_json_rows_csv(std::cout, rows);
+        return exit_ok;
+    }
+    std::printf("particle-steps per second: dt = 0.005 s, %s particle-steps (at least 5 steps) per row after one\n"
+                "untimed warm-up step; the hash covers the final positions and must not depend on the thread count\n\n",
+                sig(particle_steps, 2).c_str());
+    Table t;
+    t.header = {"scene", "method", "particles", "threads", "steps", "seconds", "particle-steps/s", "state hash (FNV-1a)"};
+    for (const auto& r : rows)
+        t.rows.push_back({r["scene"].get<std::string>(), r["method"].get<std::string>(), r["particles"].dump(),
+                          r["threads"].dump(), r["steps"].dump(), sig(r["wall_s"].get<double>(), 3),
+                          sig(r["particle_steps_per_s"].get<double>(), 3), r["state_hash_fnv1a"].get<std::string>()});
     t.print();
     return exit_ok;
 }
@@ -129,8 +141,10 @@ void add_bench_command(CLI::App& app, int& exit_code) {
         "quadratic drag + walls, for every method, with a hash of the final positions (the same\n"
         "build must print the same hashes every run).");
     cmd->add_flag("--quick", o->quick, "stop at 1e5 particles and run fewer steps");
+    cmd->add_flag("--csv", o->csv, "print CSV (full precision; threads as the count used)");
     cmd->add_option("--threads", o->threads, "comma-separated thread counts to run each row with (0 = all cores)")
         ->capture_default_str();
+    add_quiet_flag(cmd);
     cmd->callback([o, &exit_code] { exit_code = bench(*o); });
 }
 

@@ -1,14 +1,16 @@
 #include "cli/cli_support.hpp"
 
 #include "io/preset_io.hpp"
+#include "io/preset_overrides.hpp"
 
 #include <fmt/format.h>
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
 
 namespace pl::cli {
 
@@ -26,15 +28,57 @@ void add_max_preset_bytes_option(CLI::App& command) {
         ->check(positive_integer());
 }
 
-std::optional<Scene> load_scene(const std::string& command, const std::string& path) {
-    LoadResult r = load_preset(path, max_preset_bytes);
+namespace {
+
+// At most max_preset_bytes + 1 bytes of `in`: one byte more tells that the limit was passed.
+std::optional<std::string> read_bounded(std::istream& in) {
+    std::string text;
+    char buffer[1 << 16];
+    while (text.size() <= max_preset_bytes && in.read(buffer, sizeof buffer).gcount() > 0)
+        text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (in.bad()) return std::nullopt;
+    return text;
+}
+
+// The preset as read by load_preset, or (given overrides or "-") its text read here, overridden
+// and parsed by the same parse_preset. A file this cannot read is left to load_preset, whose
+// message says why.
+LoadResult load_with_overrides(const std::string& command, const std::string& path, const std::vector<std::string>& sets) {
+    if (sets.empty() && path != "-") return load_preset(path, max_preset_bytes);
+    std::optional<std::string> text;
+    if (path == "-") {
+        text = read_bounded(std::cin);
+        if (!text || text->size() > max_preset_bytes) {
+            LoadResult r;
+            r.errors.push_back({"", text ? fmt::format("the preset on standard input is larger than {} bytes", max_preset_bytes)
+                                         : "cannot read the preset from standard input"});
+            return r;
+        }
+    } else {
+        std::ifstream file(path, std::ios::binary);
+        if (file) text = read_bounded(file);
+        if (!text || text->size() > max_preset_bytes || std::filesystem::is_directory(path)) return load_preset(path, max_preset_bytes);
+    }
+    const OverrideResult overridden = apply_preset_overrides(*text, sets);
+    if (!overridden.error.empty()) {
+        print_error(command, overridden.error);
+        return {};
+    }
+    return parse_preset(overridden.text);
+}
+
+}  // namespace
+
+std::optional<Scene> load_scene(const std::string& command, const std::string& path, const std::vector<std::string>& sets) {
+    LoadResult r = load_with_overrides(command, path, sets);
     if (r.ok()) return std::move(r.scene);
+    if (r.errors.empty()) return std::nullopt;  // an override error, already printed
     if (r.errors.size() == 1 && r.errors.front().path.empty()) {  // the file itself: missing, unreadable, ...
         print_error(command, r.errors.front().message +
                                  (r.over_size_limit ? "; raise it with --max-preset-bytes BYTES" : ""));
         return std::nullopt;
     }
-    print_error(command, fmt::format("{}: not a valid preset ({} error{}):", path, r.errors.size(),
+    print_error(command, fmt::format("{}: not a valid preset ({} error{}):", path == "-" ? "standard input" : path, r.errors.size(),
                                      r.errors.size() == 1 ? "" : "s"));
     const std::string text = r.error_text();
     std::fprintf(stderr, "%s%s", text.c_str(), !text.empty() && text.back() != '\n' ? "\n" : "");
@@ -59,31 +103,25 @@ std::string printable(const std::string& text) {
     return out;
 }
 
+void add_set_option(CLI::App* command, std::vector<std::string>& sets) {
+    command->add_option("--set", sets,
+                        "KEY=VALUE: override a preset field by its path before the preset is validated\n"
+                        "(repeatable), e.g. --set drag.cd=0.6 --set particles[0].velocity=[5,5,0]")
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false);
+}
+
+void add_quiet_flag(CLI::App* command) {
+    command->add_flag_callback("-q,--quiet", [] { set_quiet(true); }, "no progress and no warnings on stderr (errors only)");
+}
+
+std::string variant_label(const Scene& scene, std::size_t variant) {
+    return scene.variants.empty() ? "" : scene.variants[variant].label;
+}
+
 std::string variant_name(const Scene& scene, std::size_t variant) {
     if (scene.variants.empty() || scene.variants[variant].label.empty()) return std::to_string(variant);
     return scene.variants[variant].label;
-}
-
-Progress::Progress(std::string what) : what_(std::move(what)), enabled_(isatty(STDERR_FILENO) == 1) {}
-
-Progress::~Progress() { done(); }
-
-void Progress::update(double fraction) {
-    if (!enabled_) return;
-    const std::lock_guard lock(mutex_);
-    const int percent = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 100.0);
-    if (percent == last_percent_) return;
-    last_percent_ = percent;
-    std::fprintf(stderr, "\r%s: %3d%%", what_.c_str(), percent);
-    std::fflush(stderr);
-}
-
-void Progress::done() {
-    const std::lock_guard lock(mutex_);
-    if (!enabled_ || last_percent_ < 0) return;
-    std::fprintf(stderr, "\r%*s\r", static_cast<int>(what_.size()) + 8, "");
-    std::fflush(stderr);
-    last_percent_ = -1;
 }
 
 void Table::print(std::FILE* out) const {

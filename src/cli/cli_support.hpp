@@ -1,13 +1,13 @@
-// Shared plumbing of the headless commands: loading presets, exit codes, progress on a
-// terminal, plain-text tables and number formatting.
+// Shared plumbing of the headless commands: loading presets, exit codes, plain-text tables and
+// number formatting (progress on a terminal: cli/progress.hpp).
 #pragma once
 
+#include "cli/progress.hpp"
 #include "physics/model/scene.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,9 +26,17 @@ void add_stability_command(CLI::App& app, int& exit_code);
 void add_advise_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
 
-// Loads and validates a preset; on failure prints every error to stderr, prefixed by the
-// command name, and returns nothing (the caller exits with exit_bad_input).
-std::optional<Scene> load_scene(const std::string& command, const std::string& path);
+// Loads and validates a preset ("-": standard input) with the --set overrides applied to its
+// document first (io/preset_overrides.hpp); on failure prints every error to stderr, prefixed by
+// the command name, and returns nothing (the caller exits with exit_bad_input).
+std::optional<Scene> load_scene(const std::string& command, const std::string& path,
+                                const std::vector<std::string>& sets = {});
+
+// The options every command that reads a preset shares: --set KEY=VALUE (repeatable).
+void add_set_option(CLI::App* command, std::vector<std::string>& sets);
+
+// -q,--quiet: no progress and no warnings on stderr (cli/progress.hpp).
+void add_quiet_flag(CLI::App* command);
 
 // Adds --max-preset-bytes (the file-size limit load_scene applies) to a command reading a preset.
 void add_max_preset_bytes_option(CLI::App& command);
@@ -42,21 +50,9 @@ std::string printable(const std::string& text);
 // A variant's name for tables and CSV: its label, or its index when the scene has no variants
 // (or the label is empty).
 std::string variant_name(const Scene& scene, std::size_t variant);
-
-// Progress on stderr, only when stderr is a terminal; redraws at most every 1%.
-class Progress {
-public:
-    explicit Progress(std::string what);
-    ~Progress();
-    void update(double fraction);  // thread-safe: studies report from worker threads
-    void done();
-
-private:
-    std::mutex mutex_;
-    std::string what_;
-    bool enabled_ = false;
-    int last_percent_ = -1;
-};
+// For CSV and JSON: the label exactly as the preset gives it ("" when it gives none), always
+// written beside the variant's index, so that a label "1" and variant 1 cannot be confused.
+std::string variant_label(const Scene& scene, std::size_t variant);
 
 // Left-aligned first column, right-aligned others; columns sized to their widest cell.
 struct Table {

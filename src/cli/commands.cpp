@@ -1,5 +1,6 @@
 #include "cli/commands.hpp"
 
+#include "cli/cli_docs.hpp"
 #include "cli/cli_support.hpp"
 #include "cli/sweep_commands.hpp"
 
@@ -42,8 +43,9 @@ bool is_subcommand(int argc, char** argv) {
     if (argc < 2) return false;
     for (const char* c : commands)
         if (std::strcmp(argv[1], c) == 0) return true;
-    return std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0 ||
-           std::strcmp(argv[1], "help") == 0;
+    for (const char* flag : {"--help", "-h", "help", "--version", "--bash-completion", "--markdown-help"})
+        if (std::strcmp(argv[1], flag) == 0) return true;
+    return false;
 }
 
 int run_command(int argc, char** argv) {
@@ -52,6 +54,7 @@ int run_command(int argc, char** argv) {
     app.fallthrough(false);
     app.get_formatter()->column_width(30);
     app.footer("Run 'particle-lab COMMAND --help' for the options of a command.");
+    app.set_version_flag("--version", std::string("particle-lab ") + PL_VERSION, "print the version and exit");
     int exit_code = exit_ok;
     add_run_command(app, exit_code);
     add_validate_command(app, exit_code);
@@ -69,11 +72,22 @@ int run_command(int argc, char** argv) {
         std::cout << app.help();
         return exit_ok;
     }
+    // Documents generated from the definitions above (installed completion, docs/cli.md).
+    if (argc == 2 && std::strcmp(argv[1], "--bash-completion") == 0) {
+        std::cout << bash_completion(app);
+        return exit_ok;
+    }
+    if (argc == 2 && std::strcmp(argv[1], "--markdown-help") == 0) {
+        std::cout << markdown_reference(app);
+        return exit_ok;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e) == 0 ? exit_ok : exit_bad_input;
     } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e) == 0 ? exit_ok : exit_bad_input;
+    } catch (const CLI::CallForVersion& e) {
         return app.exit(e) == 0 ? exit_ok : exit_bad_input;
     } catch (const CLI::ParseError& e) {
         const std::string sub = app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name();

@@ -2,6 +2,7 @@
 #include "cli/cli_support.hpp"
 #include "cli/resource_check.hpp"
 
+#include "io/json_csv.hpp"
 #include "io/metrics_json.hpp"
 #include "physics/studies/metrics.hpp"
 
@@ -17,8 +18,9 @@ namespace {
 
 struct CompareCliOptions {
     std::string preset;
+    std::vector<std::string> sets;  // --set KEY=VALUE
     double duration_s = 5.0;
-    bool json = false;
+    bool json = false, csv = false;
     std::string baseline;
     std::size_t particle = 0;
 };
@@ -46,8 +48,44 @@ std::string signed_sig(const std::optional<double>& v) {
     return (*v > 0 ? "+" : "") + sig(*v);
 }
 
+// The --json document; --csv writes its "variants" flattened (io/json_csv.hpp).
+Json comparison_json(const Scene& scene, const Comparison& c, const CompareCliOptions& o, std::size_t baseline) {
+    const VariantMetrics& base = c.variants[baseline];
+    Json j = json_document();
+    j["preset"] = scene.name;
+    j["duration_s"] = c.duration_s;
+    j["particle"] = o.particle;
+    j["baseline"] = variant_label(scene, baseline);
+    j["baseline_index"] = baseline;
+    j["notes"] = "'particle' metrics are for the selected particle; 'all_particles' sums the energy over every "
+                 "particle, and all_at_rest_s is the first time every particle is stopped";
+    Json variants = Json::array();
+    for (std::size_t v = 0; v < c.variants.size(); ++v) {
+        const VariantMetrics& m = c.variants[v];
+        Json jv;
+        jv["label"] = variant_label(scene, v);
+        jv["variant_index"] = v;
+        jv["particle"] = particle_metrics_json(m.particles[o.particle]);
+        Json all;
+        all["all_at_rest_s"] = optional_json(m.all_at_rest_time);
+        all["lost_to_drag_J"] = m.lost_drag;
+        all["lost_to_bounces_J"] = m.lost_bounce;
+        all["lost_to_friction_J"] = m.lost_friction;
+        all["wind_work_J"] = m.wind_work;
+        all["energy_residual_J"] = m.energy_residual;
+        jv["all_particles"] = all;
+        jv["steps"] = m.steps;
+        jv["physics_time_s"] = m.physics_seconds;
+        jv["cost_s_per_s"] = m.cost();
+        jv["difference_to_baseline"] = difference_json(metrics_difference(m, base, o.particle));
+        variants.push_back(jv);
+    }
+    j["variants"] = variants;
+    return j;
+}
+
 int compare(const CompareCliOptions& o) {
-    const std::optional<Scene> scene = load_scene("compare", o.preset);
+    const std::optional<Scene> scene = load_scene("compare", o.preset, o.sets);
     if (!scene) return exit_bad_input;
     const std::size_t particles = initial_particles(*scene).size();
     if (o.particle >= particles) {
@@ -83,36 +121,10 @@ int compare(const CompareCliOptions& o) {
     }
     const VariantMetrics& base = c.variants[baseline];
 
-    if (o.json) {
-        Json j;
-        j["preset"] = scene->name;
-        j["duration_s"] = c.duration_s;
-        j["particle"] = o.particle;
-        j["baseline"] = variant_name(*scene, baseline);
-        j["notes"] = "'particle' metrics are for the selected particle; 'all_particles' sums the energy over every "
-                     "particle, and all_at_rest_s is the first time every particle is stopped";
-        Json variants = Json::array();
-        for (std::size_t v = 0; v < c.variants.size(); ++v) {
-            const VariantMetrics& m = c.variants[v];
-            Json jv;
-            jv["label"] = variant_name(*scene, v);
-            jv["particle"] = particle_metrics_json(m.particles[o.particle]);
-            Json all;
-            all["all_at_rest_s"] = optional_json(m.all_at_rest_time);
-            all["lost_to_drag_J"] = m.lost_drag;
-            all["lost_to_bounces_J"] = m.lost_bounce;
-            all["lost_to_friction_J"] = m.lost_friction;
-            all["wind_work_J"] = m.wind_work;
-            all["energy_residual_J"] = m.energy_residual;
-            jv["all_particles"] = all;
-            jv["steps"] = m.steps;
-            jv["physics_seconds"] = m.physics_seconds;
-            jv["cost_s_per_s"] = m.cost();
-            jv["difference_to_baseline"] = difference_json(metrics_difference(m, base, o.particle));
-            variants.push_back(jv);
-        }
-        j["variants"] = variants;
-        std::cout << j.dump(2) << "\n";
+    if (o.json || o.csv) {
+        const Json j = comparison_json(*scene, c, o, baseline);
+        if (o.json) std::cout << j.dump(2) << "\n";
+        else write_json_rows_csv(std::cout, j["variants"]);
         return exit_ok;
     }
 
@@ -158,13 +170,16 @@ void add_compare_command(CLI::App& app, int& exit_code) {
         "Compare the variants of a preset: per variant the time of flight to the first bounce, apex\n"
         "height, range, bounces, time to rest, energy lost to drag/bounces/friction, cost (physics\n"
         "time per simulated second) and the difference to a baseline variant.");
-    cmd->add_option("PRESET", o->preset, "preset JSON file")->required();
+    cmd->add_option("PRESET", o->preset, "preset JSON file (-: standard input)")->required();
+    add_set_option(cmd, o->sets);
     cmd->add_option("--duration", o->duration_s, "simulated seconds; a whole number of every variant's steps")
         ->capture_default_str()
         ->check(positive_number());
-    cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    auto* json = cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    cmd->add_flag("--csv", o->csv, "print CSV, one row per variant (the JSON's variants, flattened)")->excludes(json);
     cmd->add_option("--baseline", o->baseline, "label of the baseline variant (default: the first)");
     cmd->add_option("--particle", o->particle, "particle whose trajectory metrics are shown")->capture_default_str()->check(whole_number_at_least(0));
+    add_quiet_flag(cmd);
     cmd->callback([o, &exit_code] { exit_code = compare(*o); });
 }
 

@@ -3,8 +3,9 @@
 
 #include "cli/interrupt.hpp"
 #include "cli/resource_check.hpp"
+#include "cli/run_outputs.hpp"
 #include "io/atomic_output.hpp"
-#include "io/csv_writer.hpp"
+#include "io/trajectory_table.hpp"
 #include "physics/stepping/energy.hpp"
 #include "physics/studies/metrics.hpp"
 #include "physics/stepping/simulation.hpp"
@@ -14,9 +15,7 @@
 
 #include <algorithm>
 #include <array>
-#include <initializer_list>
 #include <memory>
-#include <optional>
 
 namespace pl::cli {
 
@@ -24,15 +23,10 @@ namespace {
 
 struct RunOptions {
     std::string preset;
+    std::vector<std::string> sets;  // --set KEY=VALUE
     double duration_s = 5.0;
-    std::string out, events;
-    std::uint64_t every = 1;
+    RunOutputSpec output;
 };
-
-constexpr std::initializer_list<const char*> trajectory_header = {
-    "t", "variant", "particle", "x", "y", "z", "vx", "vy", "vz", "speed", "height", "kinetic_energy"};
-constexpr std::initializer_list<const char*> event_header = {"t",         "variant",  "particle", "wall",
-                                                             "speed_in", "speed_out", "kind"};
 
 // Base steps between event drains. A particle raises at most a few events per step (a bounce on
 // each of up to three walls at a corner, then rest, stop or lift); 8 per particle-step bounds
@@ -43,25 +37,18 @@ std::uint64_t event_drain_interval(std::size_t particles) {
     return std::max<std::uint64_t>(1, Simulation::max_pending_events / 2 / per_step);
 }
 
-void write_state_rows(CsvWriter& csv, const Simulation& sim, const std::string& variant, double t) {
-    const ParticleState& s = sim.state();
-    const double floor_y = sim.model().room.floor_y();
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const Vec3 v = s.velocity(i);
-        csv.field(t).field(variant).field(static_cast<std::uint64_t>(i));
-        csv.field(s.x[i]).field(s.y[i]).field(s.z[i]).field(v.x).field(v.y).field(v.z);
-        csv.field(glm::length(v)).field(s.y[i] - floor_y).field(kinetic_energy(s.mass[i], v));
-        csv.end_row();
-    }
-}
-
-void write_event_rows(CsvWriter& csv, const std::vector<Event>& events, const std::string& variant) {
-    for (const Event& e : events) {
-        csv.field(e.t).field(variant).field(static_cast<std::uint64_t>(e.particle));
-        csv.field(e.wall >= 0 ? wall_name(e.wall) : "");
-        csv.field(e.speed_in).field(e.speed_out).field(to_string(e.kind));
-        csv.end_row();
-    }
+// An output that would overwrite the preset being read, or the other output, is refused
+// (standard output, "-", is never the preset; both on it is refused by RunOutputs).
+std::string output_conflict(const RunOptions& o) {
+    const auto is_file = [](const std::string& p) { return !p.empty() && p != "-"; };
+    const RunOutputSpec& out = o.output;
+    if (is_file(out.out) && o.preset != "-" && same_file(out.out, o.preset))
+        return fmt::format("--out '{}' is the preset itself", out.out);
+    if (is_file(out.events) && o.preset != "-" && same_file(out.events, o.preset))
+        return fmt::format("--events '{}' is the preset itself", out.events);
+    if (is_file(out.out) && is_file(out.events) && same_file(out.out, out.events))
+        return fmt::format("--out and --events name the same file '{}'", out.out);
+    return "";
 }
 
 // Warnings are raised once per particle and kind; a big scene can still raise thousands, so at
@@ -111,34 +98,8 @@ void print_summary(const Scene& scene, const std::vector<Simulation>& sims, cons
     }
 }
 
-// Opens `path` as a CSV output (through a temporary file) with its header row; empty when the
-// option is not given. Prints why it could not be opened.
-std::unique_ptr<AtomicOutput> open_csv(const std::string& option, const std::string& path,
-                                       std::initializer_list<const char*> header) {
-    if (path.empty()) return nullptr;
-    auto out = std::make_unique<AtomicOutput>(path);
-    if (!out->ok()) {
-        print_error("run", option + ": " + out->error());
-        return nullptr;
-    }
-    CsvWriter csv(out->stream());
-    for (const char* h : header) csv.field(h);
-    csv.end_row();
-    return out;
-}
-
-// An output that would overwrite the preset being read, or the other output, is refused.
-std::string output_conflict(const RunOptions& o) {
-    if (!o.out.empty() && same_file(o.out, o.preset)) return fmt::format("--out '{}' is the preset itself", o.out);
-    if (!o.events.empty() && same_file(o.events, o.preset))
-        return fmt::format("--events '{}' is the preset itself", o.events);
-    if (!o.out.empty() && !o.events.empty() && same_file(o.out, o.events))
-        return fmt::format("--out and --events name the same file '{}'", o.out);
-    return "";
-}
-
 int run(const RunOptions& o) {
-    const std::optional<Scene> scene = load_scene("run", o.preset);
+    const std::optional<Scene> scene = load_scene("run", o.preset, o.sets);
     if (!scene) return exit_bad_input;
     const DurationPlan plan = plan_duration(*scene, o.duration_s);
     if (!plan.error.empty()) {
@@ -156,34 +117,31 @@ int run(const RunOptions& o) {
         return exit_bad_input;
     }
     const InterruptGuard interrupt;
-    const std::unique_ptr<AtomicOutput> traj_file = open_csv("--out", o.out, trajectory_header);
-    const std::unique_ptr<AtomicOutput> events_file = open_csv("--events", o.events, event_header);
-    if ((!o.out.empty() && !traj_file) || (!o.events.empty() && !events_file)) return exit_runtime_failure;
-    std::optional<CsvWriter> traj, events;
-    if (traj_file) traj.emplace(traj_file->stream());
-    if (events_file) events.emplace(events_file->stream());
-
     const std::vector<ParticleSpec> particles = initial_particles(*scene);
+    RunOutputs outputs;
+    if (const int code = outputs.open(o.output, particles.size(), plan.base_steps, variant_count(*scene)); code != exit_ok)
+        return code;
+
     std::vector<Simulation> sims;
-    std::vector<std::string> names;
+    std::vector<std::string> labels;  // in CSV the label itself (empty when none), beside variant_index
     for (std::size_t v = 0; v < variant_count(*scene); ++v) {
         sims.emplace_back(model_for_variant(*scene, v), particles);
         sims.back().set_threads(hardware_threads());  // explicit: no hardware query per step
-        names.push_back(variant_name(*scene, v));
+        labels.push_back(variant_label(*scene, v));
     }
     std::vector<std::uint64_t> written_step(sims.size(), 0);
     std::vector<std::array<std::uint64_t, 5>> event_counts(sims.size(), {0, 0, 0, 0, 0});
-    if (traj)
-        for (std::size_t v = 0; v < sims.size(); ++v) write_state_rows(*traj, sims[v], names[v], 0.0);
+    if (outputs.trajectory())
+        for (std::size_t v = 0; v < sims.size(); ++v) outputs.write_states(sims[v], labels[v], v);
 
-    Progress progress("run");
+    Progress progress("run", plan.base_steps, "steps");
     // Every variant advances from one output point to the next in one step_n, which lets the
     // kernel take several steps per call (much faster for large scenes). Output points: every
     // K-th base step when writing CSV (K = --every), else every 256 for the progress line.
     // Events are drained at least every `drain` steps, fewer than the simulation keeps pending
     // (it drops beyond max_pending_events), so none is lost whatever K is. Splitting a step_n
     // changes no result.
-    const std::uint64_t stride = traj || events ? std::max<std::uint64_t>(o.every, 1) : 256;
+    const std::uint64_t stride = outputs.trajectory() || outputs.events() ? std::max<std::uint64_t>(o.output.every, 1) : 256;
     const std::uint64_t drain = std::min(stride, event_drain_interval(particles.size()));
     // The next stop: a drain point or the next output point (a multiple of K), whichever is first.
     const auto next_stop = [&](std::uint64_t k) {
@@ -199,10 +157,10 @@ int run(const RunOptions& o) {
             if (taken == 0 && !last) continue;
             const std::vector<Event> new_events = sims[v].drain_events();
             for (const Event& e : new_events) ++event_counts[v][static_cast<std::size_t>(e.kind)];
-            if (events) write_event_rows(*events, new_events, names[v]);
-            if (traj && output_point && (taken > before_k || last) && sims[v].step_count() != written_step[v]) {
-                // The last state is at exactly t = duration (plan_duration checked every dt divides it).
-                write_state_rows(*traj, sims[v], names[v], last ? o.duration_s : sims[v].time());
+            if (outputs.events()) outputs.write_events(new_events, labels[v], v);
+            if (outputs.trajectory() && output_point && (taken > before_k || last) && sims[v].step_count() != written_step[v]) {
+                // The last state is at t = duration (plan_duration checked every dt divides it).
+                outputs.write_states(sims[v], labels[v], v);
                 written_step[v] = sims[v].step_count();
             }
         }
@@ -210,9 +168,9 @@ int run(const RunOptions& o) {
             progress.done();
             print_error("run", fmt::format("interrupted by {} at t = {} s; no output file was changed",
                                            signal_name(signal), sig(sims.front().time(), 6)));
-            return 128 + signal;  // the AtomicOutputs remove their temporary files
+            return 128 + signal;  // the outputs remove their temporary files
         }
-        progress.update(static_cast<double>(k) / static_cast<double>(plan.base_steps));
+        progress.update_count(k);
         if (last) break;
     }
     progress.done();
@@ -221,14 +179,11 @@ int run(const RunOptions& o) {
             print_error("run", fmt::format("{} events of variant '{}' were lost", sim.dropped_events(), sim.model().label));
             return exit_runtime_failure;
         }
-    for (const auto& [option, file] : {std::pair{"--out", traj_file.get()}, std::pair{"--events", events_file.get()}})
-        if (file && !file->commit()) {
-            print_error("run", fmt::format("{}: {}", option, file->error()));
-            return exit_runtime_failure;
-        }
-    if (o.out.empty()) {
+    if (const int code = outputs.close(); code != exit_ok) return code;
+    // The summary goes to standard output unless an output does; then only the warnings remain.
+    if (!outputs.trajectory() && !outputs.to_stdout()) {
         print_summary(*scene, sims, event_counts);
-    } else {
+    } else if (!quiet()) {
         for (const Simulation& sim : sims)
             print_warnings(sim, stderr, fmt::format("particle-lab run: warning ({}): ", sim.model().label));
     }
@@ -244,17 +199,22 @@ void add_run_command(CLI::App& app, int& exit_code) {
         "Run a preset headless: every variant in lockstep for --duration seconds.\n"
         "Writes the trajectory CSV (--out) and the events CSV (--events); without --out prints a\n"
         "summary per variant: time, steps, events, energy ledger, force evaluations, warnings.");
-    cmd->add_option("PRESET", o->preset, "preset JSON file")->required();
+    cmd->add_option("PRESET", o->preset, "preset JSON file (-: standard input)")->required();
+    add_set_option(cmd, o->sets);
     cmd->add_option("--duration", o->duration_s, "simulated seconds; a whole number of every variant's steps")
         ->capture_default_str()
         ->check(positive_number());
-    cmd->add_option("--out", o->out,
-                    "trajectory CSV: t,variant,particle,x,y,z,vx,vy,vz,speed,height,kinetic_energy\n"
-                    "(initial state, every K-th step, final state at t = duration)");
-    cmd->add_option("--events", o->events, "events CSV: t,variant,particle,wall,speed_in,speed_out,kind");
-    cmd->add_option("--every", o->every, "write every K-th base step to --out")
+    cmd->add_option("--out", o->output.out,
+                    "trajectory CSV (-: standard output; NAME.npy: NumPy binary, see docs/cli.md):\n" +
+                        trajectory_column_names() +
+                        "\n(initial state, every K-th step, final state at t = duration; t_s = step x dt)");
+    cmd->add_option("--events", o->output.events, std::string("events CSV (-: standard output):\n") + event_columns);
+    cmd->add_option("--particles", o->output.particles, "write only these particles to --out and --events, e.g. 0,3-5")
+        ->type_name("LIST");
+    cmd->add_option("--every", o->output.every, "write every K-th base step to --out")
         ->capture_default_str()
         ->check(positive_integer());
+    add_quiet_flag(cmd);
     cmd->callback([o, &exit_code] { exit_code = run(*o); });
 }
 

@@ -1,6 +1,7 @@
 // particle-lab stability: the extremes grid, classified cell by cell.
 #include "cli/cli_support.hpp"
 
+#include "io/metrics_json.hpp"
 #include "io/csv_writer.hpp"
 #include "physics/studies/stability_study.hpp"
 
@@ -19,6 +20,7 @@ namespace {
 
 struct StabilityCliOptions {
     std::string preset;
+    std::vector<std::string> sets;  // --set KEY=VALUE
     bool csv = false, json = false, quick = false;
     unsigned threads = 0;
 };
@@ -49,9 +51,9 @@ void cells_csv(CsvWriter& csv, const std::vector<StabilityCell>& cells, const ch
 Json cell_json(const StabilityCell& c) {
     Json j;
     j["method"] = to_string(c.c.method);
-    j["dt"] = c.c.dt;
-    j["k"] = c.c.stiffness;
-    j["speed"] = c.c.speed;
+    j["dt_s"] = c.c.dt;
+    j["k_per_s"] = c.c.stiffness;
+    j["speed_m_s"] = c.c.speed;
     j["restitution"] = c.c.restitution;
     j["radius_fraction"] = c.c.radius_fraction;
     j["outcome"] = to_string(c.outcome);
@@ -62,8 +64,6 @@ Json cell_json(const StabilityCell& c) {
     j["detail"] = c.detail;
     return j;
 }
-
-Json optional_json(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
 
 void print_text(const StabilityReport& r, const StabilityGrid& g, const std::string& where) {
     std::printf("stability study in %s\n", where.c_str());
@@ -134,7 +134,7 @@ int stability(const StabilityCliOptions& o) {
     StabilityBase base = default_stability_base();
     std::string where = "the seed's 2 m cube room (no preset given)";
     if (!o.preset.empty()) {
-        const std::optional<Scene> scene = load_scene("stability", o.preset);
+        const std::optional<Scene> scene = load_scene("stability", o.preset, o.sets);
         if (!scene) return exit_bad_input;
         base = stability_base(*scene);
         where = fmt::format("the room, gravity and contact of '{}'", scene->name);
@@ -148,23 +148,23 @@ int stability(const StabilityCliOptions& o) {
     progress.done();
     if (o.csv) {
         CsvWriter csv(std::cout);
-        for (const char* h : {"slice", "method", "dt", "k", "speed", "restitution", "radius_fraction", "outcome", "steps",
+        for (const char* h : {"slice", "method", "dt_s", "k_per_s", "speed_m_s", "restitution", "radius_fraction", "outcome", "steps",
                               "simulated_s", "max_energy_ratio", "jitter_checked", "detail"})
             csv.field(h);
         csv.end_row();
         cells_csv(csv, r.map_cells, "map");
         cells_csv(csv, r.sweep_cells, "sweep");
     } else if (o.json) {
-        Json j;
+        Json j = json_document();
         j["energy_tolerance"] = stability_energy_tolerance;
         Json limits = Json::array();
         for (const StabilityLimit& l : r.limits) {
             Json x;
             x["method"] = to_string(l.method);
-            x["k"] = l.stiffness;
-            x["theoretical_dt"] = std::isfinite(l.theoretical_dt) ? Json(l.theoretical_dt) : Json(nullptr);
-            x["measured_dt"] = optional_json(l.measured_dt);
-            x["first_unstable_dt"] = optional_json(l.first_unstable_dt);
+            x["k_per_s"] = l.stiffness;
+            x["theoretical_dt_s"] = std::isfinite(l.theoretical_dt) ? Json(l.theoretical_dt) : Json(nullptr);
+            x["measured_dt_s"] = optional_json(l.measured_dt);
+            x["first_unstable_dt_s"] = optional_json(l.first_unstable_dt);
             limits.push_back(x);
         }
         j["limits"] = limits;
@@ -192,11 +192,13 @@ void add_stability_command(CLI::App& app, int& exit_code) {
         "or tunnelled; the theoretical dt limit is printed beside the measured one.");
     cmd->add_option("PRESET", o->preset, "preset whose room, gravity, contact and particle mass to use\n"
                                          "(default: the seed's 2 m cube)");
+    add_set_option(cmd, o->sets);
     cmd->add_flag("--quick", o->quick, "a small grid (a second or so)");
     cmd->add_option("--threads", o->threads, "worker threads (default: all cores)");
     auto* csv = cmd->add_flag("--csv", o->csv, "print every cell as CSV");
     auto* json = cmd->add_flag("--json", o->json, "print JSON");
     csv->excludes(json);
+    add_quiet_flag(cmd);
     cmd->callback([o, &exit_code] { exit_code = stability(*o); });
 }
 

@@ -17,36 +17,37 @@ events = list(csv.DictReader(open(sys.argv[2])))
 c = json.load(open(sys.argv[3]))
 assert c["particle"] == 0
 for v in c["variants"]:
-    label, m = v["label"], v["particle"]
-    rows = [r for r in traj if r["variant"] == label and r["particle"] == "0"]
-    evs = [e for e in events if e["variant"] == label and e["particle"] == "0"]
+    label, m, index = v["label"], v["particle"], str(v["variant_index"])
+    rows = [r for r in traj if r["variant_index"] == index and r["particle"] == "0"]
+    evs = [e for e in events if e["variant_index"] == index and e["particle"] == "0"]
+    assert all(r["variant"] == label for r in rows + evs), label
     assert rows, label
     # Apex: highest height among the recorded states (every step).
-    assert max(float(r["height"]) for r in rows) == m["apex_height_m"], (label, m["apex_height_m"])
+    assert max(float(r["height_m"]) for r in rows) == m["apex_height_m"], (label, m["apex_height_m"])
     # Bounces: rebound events on a wall.
     assert sum(1 for e in evs if e["kind"] == "bounce" and e["wall"]) == m["bounces"], label
     impacts = [e for e in evs if e["kind"] in ("bounce", "rest") and e["wall"]]
     if impacts:
-        t_hit = float(impacts[0]["t"])
+        t_hit = float(impacts[0]["t_s"])
         assert t_hit == m["time_of_flight_s"], (label, t_hit, m["time_of_flight_s"])
         assert impacts[0]["wall"] == m["first_impact_wall"]
         # The state before the step of the impact, extrapolated to it.
-        before = max((r for r in rows if float(r["t"]) < t_hit), key=lambda r: float(r["t"]))
-        dt = t_hit - float(before["t"])
-        x = float(before["x"]) + dt * float(before["vx"])
-        z = float(before["z"]) + dt * float(before["vz"])
+        before = max((r for r in rows if float(r["t_s"]) < t_hit), key=lambda r: float(r["t_s"]))
+        dt = t_hit - float(before["t_s"])
+        x = float(before["x_m"]) + dt * float(before["vx_m_s"])
+        z = float(before["z_m"]) + dt * float(before["vz_m_s"])
         r0 = rows[0]
-        rng = math.hypot(x - float(r0["x"]), z - float(r0["z"]))
+        rng = math.hypot(x - float(r0["x_m"]), z - float(r0["z_m"]))
         assert abs(rng - m["range_at_first_impact_m"]) < 1e-9, (label, rng, m["range_at_first_impact_m"])
     else:
         assert m["time_of_flight_s"] is None
     last = rows[-1]
-    final = math.hypot(float(last["x"]) - float(rows[0]["x"]), float(last["z"]) - float(rows[0]["z"]))
+    final = math.hypot(float(last["x_m"]) - float(rows[0]["x_m"]), float(last["z_m"]) - float(rows[0]["z_m"]))
     assert abs(final - m["final_range_m"]) < 1e-12, label
     # Time to rest: the last event leaving it with zero velocity, if it ends at rest.
-    stops = [e for e in evs if e["kind"] in ("rest", "stop") and float(e["speed_out"]) == 0.0]
-    if float(last["speed"]) == 0.0 and stops:
-        assert float(stops[-1]["t"]) == m["time_to_rest_s"], (label, stops[-1]["t"], m["time_to_rest_s"])
+    stops = [e for e in evs if e["kind"] in ("rest", "stop") and float(e["speed_out_m_s"]) == 0.0]
+    if float(last["speed_m_s"]) == 0.0 and stops:
+        assert float(stops[-1]["t_s"]) == m["time_to_rest_s"], (label, stops[-1]["t_s"], m["time_to_rest_s"])
     else:
         assert m["time_to_rest_s"] is None, label
 PY

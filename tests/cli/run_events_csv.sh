@@ -23,18 +23,19 @@ fi
 python3 - "$tmp/events.csv" <<'PY'
 import csv, math, sys
 rows = list(csv.reader(open(sys.argv[1])))
-assert rows[0] == "t,variant,particle,wall,speed_in,speed_out,kind".split(","), rows[0]
-events = rows[1:]
-bounces = [r for r in events if r[6] == "bounce"]
+assert rows[0] == "t_s,variant,variant_index,particle,wall,speed_in_m_s,speed_out_m_s,kind".split(","), rows[0]
+events = [dict(zip(rows[0], r)) for r in rows[1:]]
+bounces = [r for r in events if r["kind"] == "bounce"]
 assert len(bounces) >= 10, len(bounces)
-assert all(r[3] == "y_min" for r in bounces), bounces[:3]
+assert all(r["wall"] == "y_min" for r in bounces), bounces[:3]
+assert all(r["variant"] == "" and r["variant_index"] == "0" for r in events), events[0]  # no variants: empty label
 t0 = math.sqrt(2 * 2.0 / 9.81)  # first impact of a drop from 2 m
-assert abs(float(bounces[0][0]) - t0) < 0.005, bounces[0]
+assert abs(float(bounces[0]["t_s"]) - t0) < 0.005, bounces[0]
 for r in bounces:
-    assert math.isclose(float(r[5]), 0.8 * float(r[4]), rel_tol=1e-12), r
-times = [float(r[0]) for r in events]
+    assert math.isclose(float(r["speed_out_m_s"]), 0.8 * float(r["speed_in_m_s"]), rel_tol=1e-12), r
+times = [float(r["t_s"]) for r in events]
 assert all(a <= b for a, b in zip(times, times[1:]))
-assert events[-1][6] == "rest" and float(events[-1][5]) == 0.0, events[-1]
+assert events[-1]["kind"] == "rest" and float(events[-1]["speed_out_m_s"]) == 0.0, events[-1]
 PY
 
 "$bin" run "$preset" --duration 1 > "$tmp/summary.txt"

@@ -26,16 +26,16 @@ assert e1[0] == e64[0]
 assert len(e1) > 100, len(e1)
 assert sorted(e1[1:]) == sorted(e64[1:]), "event rows differ"
 def rows_at(path, t):
-    return sorted(tuple(r.values()) for r in csv.DictReader(open(path)) if r["t"] == t)
+    return sorted(tuple(r.values()) for r in csv.DictReader(open(path)) if r["t_s"] == t)
 for t in ("0.2", "0.4"):  # 100 and 200 steps of 2 ms: written by both
     a, b = rows_at(d + "/t20.csv", t), rows_at(d + "/t50.csv", t)
     assert len(a) == 10000 and a == b, ("states differ at t =", t)
-t50 = sorted(set(float(r["t"]) for r in csv.DictReader(open(d + "/t50.csv"))))
+t50 = sorted(set(float(r["t_s"]) for r in csv.DictReader(open(d + "/t50.csv"))))
 assert len(t50) == 5, t50  # t = 0, 50 dt, 100 dt, 150 dt, 0.4 s
 summary = open(d + "/summary.txt").read()
 kinds = {}
 for r in e1[1:]:
-    kinds[r[6]] = kinds.get(r[6], 0) + 1
+    kinds[r[7]] = kinds.get(r[7], 0) + 1
 for kind, n in kinds.items():
     assert f"{n} {kind}" in summary or f"{kind} {n}" in summary or f"{kind}: {n}" in summary, (kind, n, summary)
 PY

@@ -12,9 +12,9 @@ import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 assert len(rows) == 5 + 5 + 2, len(rows)
 semi = [r for r in rows if r["method"] == "semi_implicit_euler"]
-assert [float(r["dt"]) for r in semi] == [0.004, 0.002, 0.001, 0.0005, 0.00025]
+assert [float(r["dt_s"]) for r in semi] == [0.004, 0.002, 0.001, 0.0005, 0.00025]
 assert 0.7 < float(semi[0]["observed_order"]) < 1.3, semi[0]["observed_order"]
-assert all(r["bounce_time_error"] != "" for r in semi)  # the drop hits the floor at t = 0.64 s
+assert all(r["bounce_time_error_s"] != "" for r in semi)  # the drop hits the floor at t = 0.64 s
 assert all(r["tol"] != "" and r["adaptive"] == "1" for r in rows if r["method"] == "dopri5")
 PY
 "$bin" accuracy "$src/presets/default.json" --methods rk4 --json > "$tmp/acc.json"
@@ -24,9 +24,9 @@ python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); assert d["orders
 python3 - "$tmp/stab.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
-lim = [l for l in d["limits"] if l["method"] == "semi_implicit_euler" and l["k"] == 1000]
-assert lim and abs(lim[0]["theoretical_dt"] - 0.002) < 1e-15, lim
-assert lim[0]["first_unstable_dt"] is not None
+lim = [l for l in d["limits"] if l["method"] == "semi_implicit_euler" and l["k_per_s"] == 1000]
+assert lim and abs(lim[0]["theoretical_dt_s"] - 0.002) < 1e-15, lim
+assert lim[0]["first_unstable_dt_s"] is not None
 assert {c["outcome"] for c in d["map"]} <= {"stable", "energy_growth", "nan", "escaped", "jitter", "tunnelled"}
 assert len(d["sweep"]) > 0
 PY
