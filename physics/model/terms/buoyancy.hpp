@@ -6,9 +6,9 @@
 // the residual stays the method's own error. Not as a reduced effective potential m (1 - rho V/m)
 // g h: that would need every place that computes the potential (initial energy, relaunch, the
 // studies, the UI's ledger) to know the particle's buoyancy, where a ledger line needs none of them.
-// schema rows: see physics/model/schema/ (world.buoyancy, added by the lead with the preset key)
 #pragma once
 
+#include "physics/model/field_schema.hpp"
 #include "physics/model/terms/term.hpp"
 
 #include <numbers>
@@ -33,5 +33,12 @@ struct Buoyancy {
     static double power(const Vec3& a, const Vec3& v) { return glm::dot(a, v); }
     static double stiffness(double, double, double) { return 0.0; }
 };
+
+// Its preset row, "world.buoyancy" (listed in physics/model/schema/world_fields.hpp).
+inline constexpr schema::Field<World> buoyancy_row = schema::boolean(
+    "buoyancy", &World::buoyancy, "buoyancy",
+    "true: the weight of the displaced air, rho_air V g, lifts each particle (Archimedes). It matters when "
+    "the particle's density is not far above the air's: a 1 kg/m^3 difference is a 1 g/cm^3 ball's 0.12%, "
+    "a foam ball's tens of percent.");
 
 }  // namespace pl::terms
