@@ -90,6 +90,12 @@ void draw_analysis_panel(LabSession& s) {
         draw_stability_tab(s);
         ImGui::EndTabItem();
     }
+    const bool sweep_open = ImGui::BeginTabItem("Sweep");
+    note_item_rect(s, "tab.sweep");
+    if (sweep_open) {
+        draw_sweep_tab(s);
+        ImGui::EndTabItem();
+    }
     if (ImGui::BeginTabItem("Advise")) {
         draw_advise_tab(s);
         ImGui::EndTabItem();

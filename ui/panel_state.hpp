@@ -2,6 +2,7 @@
 // progress, and the background studies.
 #pragma once
 
+#include "io/sweep_view.hpp"
 #include "physics/studies/accuracy_study.hpp"
 #include "physics/studies/advisor.hpp"
 #include "physics/studies/metrics.hpp"
@@ -42,6 +43,14 @@ struct StabilityMap {
     std::vector<StabilityCell> cells;  // dts outer, stiffnesses inner
     std::vector<StabilityLimit> limits;
     bool cancelled = false;
+};
+
+// A sweep the Sweep tab ran: what it ran (spec, prepared scenes) and what came out.
+struct SweepRun {
+    SweepSpec spec;
+    PreparedSweep prepared;
+    SweepResults results;
+    std::string error;  // a refused plan or point: nothing ran
 };
 
 struct PanelState {
@@ -88,6 +97,16 @@ struct PanelState {
     BackgroundJob<Advice> advice;
     double advice_tolerance_m = 1e-3;
     const void* advice_experiment = nullptr;
+    BackgroundJob<SweepRun> sweep;
+    SweepChoices sweep_choices = [] {
+        SweepChoices c;
+        c.first.count = 15;  // 5 degree steps: the drag-free optimum, 45, is on the grid
+        c.second.path = "drag.model";
+        c.second.list = true;
+        c.second.values = "none,linear,quadratic,sphere_re";
+        return c;
+    }();
+    int sweep_metric = 1;  // range_at_first_impact_m
 };
 
 PanelState& panels_of(LabSession& s);

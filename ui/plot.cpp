@@ -321,6 +321,15 @@ PlotResult EndPlot() {
     result.frame_min = l.widget_min;
     result.frame_max = l.widget_max;
     const LegendEntry* over_entry = interact(c, f, entries, l.legend_outside, fit_all, result);
+    result.x_min = f.x0, result.x_max = f.x1, result.y_min = f.y0, result.y_max = f.y1;
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const bool on_area = mouse.x >= f.min.x && mouse.x <= f.max.x && mouse.y >= f.min.y && mouse.y <= f.max.y;
+    if (result.hovered && on_area && !over_entry && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+        ImGui::GetIO().MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 16.0f) {
+        result.clicked = true;
+        result.click_x = f.data_x(mouse.x);
+        result.click_y = f.data_y(mouse.y);
+    }
     hover_readout(c, f, over_entry, fit_all, result.hovered, style);
     context_menu(c, fit_all, result);
     if (has_flag(PlotFlags_ExportCsv)) result.export_csv = true;

@@ -56,6 +56,11 @@ struct PlotResult {
     bool export_png = false;  // the user asked for a picture of [frame_min, frame_max]
     std::string csv;
     ImVec2 frame_min, frame_max;  // the whole widget, screen coordinates
+    // A left click (press and release without a drag) on the plot area, in data coordinates
+    // (linear plots), and the visible ranges (to pick the nearest point in screen terms).
+    bool clicked = false;
+    double click_x = 0.0, click_y = 0.0;
+    double x_min = 0.0, x_max = 1.0, y_min = 0.0, y_max = 1.0;
 };
 
 bool BeginPlot(const char* title, const ImVec2& size, int flags = PlotFlags_None);

@@ -159,26 +159,6 @@ MotionSeries motion_series(const LabSession& s, const PlotHistory& h) {
     return out;
 }
 
-std::filesystem::path export_path(const PanelState& p, const std::string& plot, const char* extension) {
-    return std::filesystem::absolute(p.export_stem + "-" + plot + extension);
-}
-
-void write_csv(LabSession& s, const std::filesystem::path& file, const std::string& csv) {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << csv;
-    out.close();
-    if (!out) {
-        s.error_popup = "Could not write " + file.string() + " (is the folder writable?)";
-        return;
-    }
-    s.status_message = "Wrote " + file.string();
-}
-
-void ask_picture(LabSession& s, const std::filesystem::path& file, ImVec2 min, ImVec2 max) {
-    PanelState& p = panels_of(s);
-    p.picture = {2, file, min, max};
-}
-
 // A picture is taken two frames after it was asked for, once the menu that asked is closed.
 void pending_picture(LabSession& s) {
     PendingPicture& pic = panels_of(s).picture;
@@ -304,6 +284,26 @@ void ledger_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
 }
 
 }  // namespace
+
+std::filesystem::path export_path(const PanelState& p, const std::string& plot, const char* extension) {
+    return std::filesystem::absolute(p.export_stem + "-" + plot + extension);
+}
+
+void write_csv(LabSession& s, const std::filesystem::path& file, const std::string& csv) {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out << csv;
+    out.close();
+    if (!out) {
+        s.error_popup = "Could not write " + file.string() + " (is the folder writable?)";
+        return;
+    }
+    s.status_message = "Wrote " + file.string();
+}
+
+void ask_picture(LabSession& s, const std::filesystem::path& file, ImVec2 min, ImVec2 max) {
+    PanelState& p = panels_of(s);
+    p.picture = {2, file, min, max};
+}
 
 void draw_plots_panel(LabSession& s) {
     if (!s.experiment) return;

@@ -3,6 +3,12 @@
 
 #include "ui/lab_session.hpp"
 
+#include <imgui.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace pl::ui {
 
 // Control panel
@@ -32,6 +38,20 @@ std::size_t note_count(const LabSession& s);     // the others: out of range wit
 void note_item_rect(LabSession& s, const std::string& name);
 // Saves the scene to `file`; false (and an error dialog) when it cannot.
 bool save_scene_to(LabSession& s, const std::filesystem::path& file);
+// Plot exports: <cwd>/<export stem>-<plot><extension>; CSV text written there (status line or
+// error dialog); a picture of [min, max] taken two frames later (the menu that asked is gone).
+std::filesystem::path export_path(const PanelState& p, const std::string& plot, const char* extension);
+void write_csv(LabSession& s, const std::filesystem::path& file, const std::string& csv);
+void ask_picture(LabSession& s, const std::filesystem::path& file, ImVec2 min, ImVec2 max);
+void draw_sweep_tab(LabSession& s);
+// The Sweep tab's last result for the state dump: points, points run, and per line series its
+// label and the first axis's value at the series' largest metric value.
+struct SweepSummary {
+    std::size_t points = 0, done = 0;
+    std::vector<std::pair<std::string, double>> best;
+    bool running = false;
+};
+SweepSummary sweep_summary(const LabSession& s);
 // The user's own presets: $XDG_CONFIG_HOME/particle-lab/presets or ~/.config/particle-lab/presets.
 std::filesystem::path user_preset_dir();
 

@@ -160,6 +160,12 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     }
     j["live_metrics"] = live;
     j["pinned_runs"] = pinned_json(s, selected);
+    // The Sweep tab's last result: points, points run, and per series the first axis's value
+    // where the shown metric is largest.
+    const ui::SweepSummary sweep = ui::sweep_summary(s);
+    nlohmann::json best = nlohmann::json::array();
+    for (const auto& [label, x] : sweep.best) best.push_back({{"series", label}, {"x", x}});
+    j["sweep"] = {{"running", sweep.running}, {"points", sweep.points}, {"done", sweep.done}, {"best", best}};
     j["t"] = s.experiment ? s.experiment->time() : 0.0;
     j["base_steps"] = s.experiment ? s.experiment->base_steps() : 0;
     nlohmann::json variants = nlohmann::json::array();
