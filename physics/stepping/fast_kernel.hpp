@@ -28,7 +28,8 @@
 //    block of block_particles through all the steps while it is in cache, instead of streaming
 //    the whole state once per step; each step's events and frozen particles are kept apart and
 //    merged step by step, range by range, so the result is that of one step at a time.
-// Where the parts are: fast_kernel.cpp (ranges, chunks, phase 2's routing, the resting passes),
+// Where the parts are: fast_kernel.cpp (ranges, threads, the kernel for each method and term list),
+// range_stepper.hpp (chunks, phase 2's routing, the resting passes),
 // flight_chunk.hpp (phase 1), held_lanes.hpp (which particles phase 1 leaves alone),
 // contact_lanes.hpp and slide_lane.hpp (phase 2's bounce and slide lanes), lane_math.hpp (the
 // branch-free selects they share).
