@@ -44,6 +44,14 @@ struct Requests {
     bool quit = false;
 };
 
+// A request that would replace the scene or end the app. With unsaved edits it waits in
+// LabSession::pending until the user answers the unsaved-changes dialog (ui/unsaved_prompt.cpp).
+struct PendingAction {
+    enum class Kind { quit, open, revert };
+    Kind kind = Kind::quit;
+    std::filesystem::path file;  // open, revert: the preset to load
+};
+
 // Particle 0 of a scene as it starts (the explicit list's first, else the emitter's); none
 // without particles.
 std::optional<ParticleSpec> first_particle(const Scene& scene);
@@ -76,17 +84,27 @@ struct LabSession {
     std::vector<int> split_variants;           // the variants the split view shows (empty: the first 9)
     // Popups the shell toggles from keys and window events; draw_popups shows them.
     bool show_help = false;                    // F1/H toggle, Esc closes
-    bool confirm_quit = false;                 // window closed with unsaved changes: ask, then set requests.quit
+    std::optional<PendingAction> pending;      // asked about: unsaved edits would be lost (Save / Discard / Cancel)
     // Screen rectangles {x, y, w, h} of a few named widgets as the last frame drew them (only
     // while visible), for the GUI tests to click: "tab.warnings", "warnings.row0", "preset.NAME".
     std::map<std::string, std::array<float, 4>> widget_rects;
 
+    // Every path that drops the scene (Ctrl+O, Load, Revert, Ctrl+Q, closing the window) comes
+    // here: done at once when nothing is unsaved, otherwise left in `pending` for the dialog.
+    void request(const PendingAction& a);
+    // Does `a` now (no question asked); false when a load failed (the error dialog says why).
+    bool perform(const PendingAction& a);
     // Replaces the scene and rebuilds the experiment; on failure nothing changes.
     bool load(const std::filesystem::path& file);
     // A preset opened from `file`: the scene, and the launch it defines (particle 0's velocity
-    // becomes the Launch panel's, so L throws what the preset throws).
-    void open_preset(const Scene& s, const std::filesystem::path& file);
-    void apply_scene(const Scene& s);          // rebuild the experiment from an edited scene
+    // becomes the Launch panel's, so L throws what the preset throws). Empty, or why the scene
+    // cannot run here (apply_scene), nothing changed.
+    std::string open_preset(const Scene& s, const std::filesystem::path& file);
+    // Rebuilds the experiment from an edited scene. A scene whose state would not fit in the
+    // memory available (physics/studies/resource_estimate.hpp), or whose building throws
+    // bad_alloc or length_error, is refused: the returned text says why (with the numbers), and
+    // the current scene and run are kept.
+    std::string apply_scene(const Scene& s);
 };
 
 }  // namespace pl::ui

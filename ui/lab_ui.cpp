@@ -180,43 +180,6 @@ void error_modal(LabSession& s) {
     ImGui::EndPopup();
 }
 
-void quit_prompt(LabSession& s) {
-    const bool open = ImGui::IsPopupOpen("Unsaved changes##quit");
-    // An error dialog goes first; the question comes back once it is read.
-    if (s.confirm_quit && !open && s.error_popup.empty()) ImGui::OpenPopup("Unsaved changes##quit");
-    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (!ImGui::BeginPopupModal("Unsaved changes##quit", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    if (!s.confirm_quit) {
-        ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-        return;
-    }
-    ImGui::Text("\"%s\" has unsaved changes.", s.scene.name.c_str());
-    ImGui::TextDisabled("%s", s.preset_path.empty() ? "It was never saved." : s.preset_path.string().c_str());
-    ImGui::Separator();
-    const bool can_save = !s.preset_path.empty();
-    ImGui::BeginDisabled(!can_save);
-    if (ImGui::Button("Save and quit")) {
-        if (save_scene_to(s, s.preset_path)) s.requests.quit = true;
-        s.confirm_quit = false;
-        ImGui::CloseCurrentPopup();
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button("Quit without saving")) {
-        s.requests.quit = true;
-        s.confirm_quit = false;
-        ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) {
-        s.confirm_quit = false;
-        ImGui::CloseCurrentPopup();
-    }
-    ImGui::SetItemDefaultFocus();
-    ImGui::EndPopup();
-}
-
 void help_overlay(LabSession& s) {
     if (!s.show_help) return;
     const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -273,7 +236,7 @@ void help_overlay(LabSession& s) {
 
 void draw_popups(LabSession& s) {
     help_overlay(s);
-    quit_prompt(s);
+    draw_unsaved_prompt(s);
     error_modal(s);
 }
 

@@ -103,7 +103,7 @@ void draw_preset_section(LabSession& s) {
             const bool selected = p.preset_choice == static_cast<int>(i);
             if (ImGui::Selectable((e.name + "##" + std::to_string(i)).c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
                 p.preset_choice = static_cast<int>(i);
-                if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) s.load(e.path);
+                if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) s.request({PendingAction::Kind::open, e.path});
             }
             note_item_rect(s, "preset." + e.name);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n(double-click to load)", e.path.string().c_str());
@@ -113,18 +113,16 @@ void draw_preset_section(LabSession& s) {
     }
     const bool chosen = p.preset_choice >= 0 && p.preset_choice < static_cast<int>(p.presets.size());
     ImGui::BeginDisabled(!chosen);
-    if (ImGui::Button("Load") && chosen) s.load(p.presets[static_cast<std::size_t>(p.preset_choice)].path);
+    if (ImGui::Button("Load") && chosen)
+        s.request({PendingAction::Kind::open, p.presets[static_cast<std::size_t>(p.preset_choice)].path});
+    note_item_rect(s, "preset.load");
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(s.preset_path.empty());
     if (ImGui::Button("Save")) save_scene_to(s, s.preset_path);
     ImGui::SameLine();
-    if (ImGui::Button("Revert")) {
-        if (s.load(s.preset_path)) {
-            s.status_message = "Reverted to " + s.preset_path.filename().string();
-            rescan(s, p);
-        }
-    }
+    if (ImGui::Button("Revert")) s.request({PendingAction::Kind::revert, s.preset_path});
+    note_item_rect(s, "preset.revert");
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Rescan")) rescan(s, p);
@@ -159,8 +157,7 @@ void draw_preset_section(LabSession& s) {
                                                ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+O: type a preset's path, Enter opens it");
     ImGui::SameLine();
-    // Rescanned after a load so the list marks the preset now open (and shows a new file).
-    if ((ImGui::Button("Open") || enter) && !p.open_path.empty() && s.load(p.open_path)) rescan(s, p);
+    if ((ImGui::Button("Open") || enter) && !p.open_path.empty()) s.request({PendingAction::Kind::open, p.open_path});
 }
 
 }  // namespace pl::ui

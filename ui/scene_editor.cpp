@@ -30,7 +30,10 @@ bool SceneEditor::commit(const std::function<void(Scene&)>& change, bool from_fi
         if (!from_field) s_.error_popup = "This change was not applied:\n" + errors;
         return false;
     }
-    s_.apply_scene(edited);
+    if (const std::string refused = s_.apply_scene(edited); !refused.empty()) {
+        s_.error_popup = "This change was not applied: " + refused;
+        return false;
+    }
     s_.dirty = true;
     panels_.edits_experiment = s_.experiment.get();  // keep the field's own refusal state
     return true;

@@ -30,6 +30,10 @@ void draw_stability_tab(LabSession& s);
 void draw_advise_tab(LabSession& s);
 void draw_warnings_tab(LabSession& s);
 
+// Popups
+// Asks about s.pending (unsaved edits would be lost): Save / Discard / Cancel.
+void draw_unsaved_prompt(LabSession& s);
+
 // Shared bits
 std::string variant_name(const LabSession& s, std::size_t v);  // label, or "variant N"
 std::size_t warning_count(const LabSession& s);  // warnings that put a number at risk (warning_risk.hpp)

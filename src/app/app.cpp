@@ -26,7 +26,10 @@ int run_gui(int argc, char** argv) {
     }
     ui::LabSession session;
     session.preset_dir = data_path("presets");
-    session.open_preset(*preset.scene, options.preset);
+    if (const std::string refused = session.open_preset(*preset.scene, options.preset); !refused.empty()) {
+        std::fprintf(stderr, "particle-lab: cannot open %s: %s\n", options.preset.string().c_str(), refused.c_str());
+        return 2;
+    }
     if (options.time_scale) session.time_scale = *options.time_scale;
     session.status_message = "Loaded " + options.preset.filename().string();
     try {

@@ -165,8 +165,7 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         if (take_dump_request()) dump_state(options, session, frames, {view.camera, shown_panes, drag.aim});
         if (glfwWindowShouldClose(window.handle())) {
             glfwSetWindowShouldClose(window.handle(), GLFW_FALSE);
-            if (session.dirty) session.confirm_quit = true;
-            else session.requests.quit = true;
+            session.request({ui::PendingAction::Kind::quit, {}});
         }
         const Clock::time_point now = Clock::now();
         const double measured_dt = std::chrono::duration<double>(now - last).count();

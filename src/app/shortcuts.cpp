@@ -9,14 +9,9 @@ namespace pl::app {
 
 namespace {
 
-void request_quit(ui::LabSession& s) {
-    if (s.dirty) s.confirm_quit = true;
-    else s.requests.quit = true;
-}
-
 void close_popups(ui::LabSession& s) {
     s.show_help = false;
-    s.confirm_quit = false;
+    s.pending.reset();
     s.error_popup.clear();
 }
 
@@ -33,7 +28,7 @@ ViewCommand apply_shortcuts(const std::vector<KeyPress>& keys, bool text_input_a
             continue;
         }
         if ((k.mods & GLFW_MOD_CONTROL) && k.key == GLFW_KEY_Q) {
-            request_quit(s);
+            s.request({ui::PendingAction::Kind::quit, {}});
             continue;
         }
         if ((k.mods & GLFW_MOD_CONTROL) && k.key == GLFW_KEY_S) {

@@ -118,6 +118,10 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     j["error_popup"] = s.error_popup;
     j["show_help"] = s.show_help;
     j["scene_name"] = s.scene.name;
+    j["scene_dt"] = s.scene.integrator.dt;
+    // The question the unsaved-changes dialog asks, if any: "quit", "open" or "revert".
+    static constexpr const char* pending_names[] = {"quit", "open", "revert"};
+    j["pending"] = s.pending ? nlohmann::json(pending_names[static_cast<int>(s.pending->kind)]) : nlohmann::json(nullptr);
     j["status"] = s.status_message;
     // Whether a text field had the keyboard on the last frame (tests wait for it before typing).
     j["text_input"] = ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantTextInput;

@@ -106,9 +106,7 @@ int run(const RunOptions& o) {
         print_error("run", "--duration: " + plan.error);
         return exit_bad_input;
     }
-    const std::uint64_t particle_count = scene->particles.size() + (scene->emitter ? scene->emitter->count : 0);
-    if (const std::string refused = check_work("run", {particle_count, variant_count(*scene), double(plan.base_steps)});
-        !refused.empty()) {
+    if (const std::string refused = check_work("run", work_of(*scene, double(plan.base_steps))); !refused.empty()) {
         print_error("run", refused);
         return exit_bad_input;
     }
