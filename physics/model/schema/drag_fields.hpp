@@ -1,8 +1,11 @@
-// Rows of the preset's "drag" section (see physics/model/field_schema.hpp).
+// Rows of the preset's "drag" section (see physics/model/field_schema.hpp): the model selector here,
+// each model's own rows in its term header (cd: drag_quadratic.hpp, b: drag_linear.hpp).
 #pragma once
 
 #include "physics/model/field_schema.hpp"
 #include "physics/model/schema/limits.hpp"
+#include "physics/model/terms/drag_linear.hpp"
+#include "physics/model/terms/drag_quadratic.hpp"
 
 namespace pl::schema {
 
@@ -11,12 +14,8 @@ inline constexpr Field<DragSettings> drag_rows[] = {
         "model", 4, "drag model",
         "none: no air resistance. linear: Stokes, F = -6 pi mu R v (or an explicit b). quadratic: Newton, "
         "F = -1/2 rho Cd A |v| v. sphere_re: Cd(Re) for a smooth sphere over the whole Reynolds range (Morrison 2013)."),
-    number("cd", &DragSettings::cd, "", positive(max_cd), "Cd", "Drag coefficient, 0.47 for a smooth sphere.")
-        .when(bit<DragModel::quadratic>()),
-    // Absent (null or omitted): Stokes b = 6 pi mu R from the air's viscosity and the radius.
-    optional_number("b", &DragSettings::linear_b, "N s/m", non_negative(max_linear_b), "b",
-                    "Linear drag coefficient, F = -b v_rel; null or omitted: Stokes b = 6 pi mu R.")
-        .when(bit<DragModel::linear>()),
+    terms::cd_row,
+    terms::linear_b_row,
 };
 
 template <>
