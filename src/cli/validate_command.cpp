@@ -12,6 +12,7 @@ namespace {
 
 struct ValidateOptions {
     std::string path;
+    std::vector<std::string> sets;  // --set KEY=VALUE: validate the preset as overridden
     bool format = false;
 };
 
@@ -24,7 +25,7 @@ int validate(const ValidateOptions& o) {
         std::fprintf(stderr, "particle-lab validate: PRESET is required (or --format)\n");
         return exit_bad_input;
     }
-    const std::optional<Scene> scene = load_scene("validate", o.path);
+    const std::optional<Scene> scene = load_scene("validate", o.path, o.sets);
     if (!scene) return exit_bad_input;
     const std::size_t particles = scene->particles.size() + (scene->emitter ? scene->emitter->count : 0);
     const std::size_t variants = scene->variants.size();
@@ -41,7 +42,8 @@ void add_validate_command(CLI::App& app, int& exit_code) {
     cmd->footer(
         "Check a preset: exit 0 printing 'ok: N particles, M variants', or exit 2 printing every\n"
         "error with its JSON path and the rule broken. --format prints the preset format reference.");
-    cmd->add_option("PRESET", o->path, "preset JSON file");
+    cmd->add_option("PRESET", o->path, "preset JSON file (-: standard input)");
+    add_set_option(cmd, o->sets);
     cmd->add_flag("--format", o->format, "print the preset format reference (every key, unit, bound, default)");
     cmd->callback([o, &exit_code] { exit_code = validate(*o); });
 }

@@ -52,4 +52,13 @@ import json, sys
 apex = [json.load(open(f))["variants"][0]["particle"]["apex_height_m"] for f in sys.argv[1:]]
 assert apex[1] < apex[0], apex  # a slower throw up does not rise as high
 PY
+# validate checks the preset as overridden, with the same messages.
+"$bin" validate "$preset" --set drag.cd=0.6 > "$tmp/valid.txt" || fail "validate --set drag.cd=0.6 refused a valid value"
+grep -q '^ok: ' "$tmp/valid.txt" || fail "validate --set: no ok line"
+set +e
+"$bin" validate "$preset" --set drag.cd=-1 > /dev/null 2> "$tmp/validate_err.txt"
+code=$?
+set -e
+[ "$code" -eq 2 ] || fail "validate --set drag.cd=-1: expected exit 2, got $code"
+grep -qF "drag.cd: must be > 0, got -1" "$tmp/validate_err.txt" || fail "validate --set drag.cd=-1: $(cat "$tmp/validate_err.txt")"
 echo OK
