@@ -4,7 +4,6 @@
 #include "io/preset_io.hpp"
 
 #include "preset_test_support.hpp"
-#include "temp_dir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,14 +14,10 @@ namespace pl {
 namespace {
 
 namespace fs = std::filesystem;
+using TempDir = test::PresetTempDir;
 using test::load_ok;
+using test::preset_dir;
 using test::read_bytes;
-
-const fs::path preset_dir = fs::path(PL_SOURCE_DIR) / "presets";
-
-struct TempDir : test::TempDir {
-    TempDir() : test::TempDir("pl_preset_errors_") {}
-};
 
 TEST(PresetErrors, EveryProblemIsReportedWithPathAndRule) {
     const LoadResult r = parse_preset(R"({ "format": "particle-lab-preset", "version": 1,

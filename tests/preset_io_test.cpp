@@ -4,7 +4,6 @@
 #include "physics/model/schema/scene_fields.hpp"
 
 #include "preset_test_support.hpp"
-#include "temp_dir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,14 +21,10 @@ namespace pl {
 namespace {
 
 namespace fs = std::filesystem;
+using TempDir = test::PresetTempDir;
 using test::load_ok;
+using test::preset_dir;
 using test::read_bytes;
-
-const fs::path preset_dir = fs::path(PL_SOURCE_DIR) / "presets";
-
-struct TempDir : test::TempDir {
-    TempDir() : test::TempDir("pl_preset_io_") {}
-};
 
 std::vector<fs::path> shipped_presets() {
     std::vector<fs::path> files;

@@ -3,6 +3,8 @@
 
 #include "io/preset_io.hpp"
 
+#include "temp_dir.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +13,14 @@
 #include <string>
 
 namespace pl::test {
+
+// The shipped presets' folder.
+inline const std::filesystem::path preset_dir = std::filesystem::path(PL_SOURCE_DIR) / "presets";
+
+// A fresh folder for the files a preset test writes, removed at the end.
+struct PresetTempDir : TempDir {
+    PresetTempDir() : TempDir("pl_preset_") {}
+};
 
 // The whole file, byte for byte.
 inline std::string read_bytes(const std::filesystem::path& file) {
