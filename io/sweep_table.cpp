@@ -1,5 +1,6 @@
 #include "io/sweep_table.hpp"
 
+#include "io/atomic_output.hpp"
 #include "io/csv_writer.hpp"
 
 #include <fmt/format.h>
@@ -9,7 +10,6 @@
 #include <charconv>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace pl {
 
@@ -219,26 +219,10 @@ std::string merge_sweep_files(const std::vector<SweepFile>& shards, const std::v
 }
 
 std::string write_file_atomically(const fs::path& file, const std::string& text) {
-    const fs::path tmp = file.string() + fmt::format(".tmp{}", static_cast<long>(::getpid()));
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return fmt::format("cannot write {}: cannot create {}", file.string(), tmp.string());
-        out << text;
-        out.flush();
-        if (!out) {
-            out.close();
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            return fmt::format("cannot write {}: writing {} failed (disk full?)", file.string(), tmp.string());
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, file, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        return fmt::format("cannot write {}: {}", file.string(), ec.message());
-    }
-    return "";
+    AtomicOutput out(file);  // a unique temporary file beside the target, synced, then renamed
+    if (out.ok()) out.stream() << text;
+    if (out.ok() && out.commit()) return "";
+    return "cannot write the sweep output: " + out.error();
 }
 
 }  // namespace pl

@@ -48,8 +48,8 @@ std::optional<SweepFile> read_sweep_file(const std::filesystem::path& file, std:
 std::string merge_sweep_files(const std::vector<SweepFile>& shards, const std::vector<std::string>& names,
                               std::string& error);
 
-// Writes `text` to `file` through a temporary file in the same directory and a rename, so the
-// file is either absent, the previous one, or complete. Returns an error or "".
+// Writes `text` to `file` whole or not at all (io/atomic_output.hpp: a unique temporary file
+// beside it, synced and renamed over it). Returns an error or "".
 std::string write_file_atomically(const std::filesystem::path& file, const std::string& text);
 
 }  // namespace pl
