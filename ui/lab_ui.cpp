@@ -208,6 +208,7 @@ void help_overlay(LabSession& s) {
         {"1 2 3 (shift: other side)", "look along x / y / z"},
         {"0", "reset the view"},
         {"F", "focus the selected particle"},
+        {"F9", "start / stop recording a video (file, format, area: the REC button)"},
         {"F1 or H", "this help"},
         {"Esc", "close dialogs, cancel an aim"},
         {"Ctrl+S", "save the preset over its file (previous kept as .bak)"},

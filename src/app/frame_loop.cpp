@@ -7,6 +7,7 @@
 #include "app/layout.hpp"
 #include "app/particle_tooltip.hpp"
 #include "app/physics_driver.hpp"
+#include "app/record_controls.hpp"
 #include "app/scene_renderer.hpp"
 #include "app/screenshot.hpp"
 #include "app/session_requests.hpp"
@@ -112,8 +113,7 @@ void take_screenshot(const std::filesystem::path& file, GLFWwindow* window, ui::
         const ImVec2 display = ImGui::GetIO().DisplaySize;
         const float sx = display.x > 0 ? static_cast<float>(w) / display.x : 1.0f;
         const float sy = display.y > 0 ? static_cast<float>(h) / display.y : 1.0f;
-        area = {static_cast<int>(std::lround(crop->crop_x * sx)), static_cast<int>(std::lround(crop->crop_y * sy)),
-                static_cast<int>(std::lround(crop->crop_w * sx)), static_cast<int>(std::lround(crop->crop_h * sy))};
+        area = to_pixels(crop->crop_x, crop->crop_y, crop->crop_w, crop->crop_h, sx, sy);
     }
     const std::string error = write_screenshot_png(file, w, h, area);
     if (error.empty()) {
@@ -155,6 +155,12 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
     std::string title = window_title(session);
     long frames = 0;
     std::vector<ViewPane> shown_panes;  // the last frame's, for the state dump
+    RecordControl record;
+    if (options.record) {
+        record.next = *options.record;
+        record.quit_when_done = record.toggle = true;
+    }
+    auto snapshot = [&] { return ViewSnapshot{view.camera, shown_panes, drag.aim, &record}; };
     Clock::time_point last = Clock::now();
 
     while (true) {
@@ -162,7 +168,7 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         // Quitting still draws this one frame when a screenshot of the last frame is wanted.
         const bool quitting = quit_signalled() || session.requests.quit;
         if (quitting && !options.screenshot) break;
-        if (take_dump_request()) dump_state(options, session, frames, {view.camera, shown_panes, drag.aim});
+        if (take_dump_request()) dump_state(options, session, frames, snapshot());
         if (glfwWindowShouldClose(window.handle())) {
             glfwSetWindowShouldClose(window.handle(), GLFW_FALSE);
             session.request({ui::PendingAction::Kind::quit, {}});
@@ -170,26 +176,37 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         const Clock::time_point now = Clock::now();
         const double measured_dt = std::chrono::duration<double>(now - last).count();
         last = now;
-        const double real_dt = deterministic ? *options.fixed_frame_dt : std::min(measured_dt, max_frame_dt_s);
 
         imgui.begin_frame();
         const ImGuiIO& io = ImGui::GetIO();
         const ViewCommand key_command = apply_shortcuts(input.keys, io.WantTextInput, io.WantCaptureKeyboard, session);
         if (key_command.cancel_gesture) cancel_launch_aim(drag.aim);
+        if (key_command.toggle_recording) record.toggle = true;
         apply_view_command(key_command, view, session);
         input.keys.clear();
+        int fb_w = 0, fb_h = 0;
+        glfwGetFramebufferSize(window.handle(), &fb_w, &fb_h);
+        const FramebufferMapping fb{io.DisplaySize.x > 0 ? static_cast<float>(fb_w) / io.DisplaySize.x : 1.0f,
+                                    io.DisplaySize.y > 0 ? static_cast<float>(fb_h) / io.DisplaySize.y : 1.0f, fb_h};
+        const ShellLayout layout = compute_layout(io.DisplaySize.x, io.DisplaySize.y, collapsed, layout_metrics());
+        begin_record_frame(record, session, layout, io.DisplaySize.x, io.DisplaySize.y, fb.scale_x, fb.scale_y);
+        // A recording runs on its own fixed clock: each frame is 1/fps of real time, however long it takes.
+        const std::optional<double> record_dt = record.recorder.frame_dt();
+        const bool fixed_clock = deterministic || record_dt;
+        const double real_dt = record_dt      ? *record_dt
+                               : deterministic ? *options.fixed_frame_dt
+                                               : std::min(measured_dt, max_frame_dt_s);
         handle_view_keys(window.handle(), input, view.camera, static_cast<float>(real_dt));
 
         trails.sync(session.experiment.get());
         if (perform_state_requests(session, after_steps).state_jumped) trails.clear();
-        run_physics(session, real_dt, deterministic ? 0.0 : physics_budget_s, after_steps);
+        run_physics(session, real_dt, fixed_clock ? 0.0 : physics_budget_s, after_steps);
         smooth(session.frame.fps, 1.0 / std::max(measured_dt, 1e-6), measured_dt);
         ui::record_frame(session);
         follow_room(view, session);
 
         // Panels, then the 3D view's overlays and input (the view is the space between panels).
-        const ShellLayout layout = compute_layout(io.DisplaySize.x, io.DisplaySize.y, collapsed, layout_metrics());
-        apply_view_command(draw_shell_windows(session, layout, collapsed), view, session);
+        apply_view_command(draw_shell_windows(session, layout, collapsed, record), view, session);
         const std::size_t variant_count = session.experiment ? session.experiment->variant_count() : 1;
         const std::vector<ViewPane> panes = view_panes(layout.view, session.split_view, variant_count,
                                                        split_variants(session.split_variants, variant_count));
@@ -199,19 +216,16 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         if (hovered) show_particle_tooltip(session, hovered->particle);
         ui::draw_popups(session);
 
-        int fb_w = 0, fb_h = 0;
-        glfwGetFramebufferSize(window.handle(), &fb_w, &fb_h);
         glViewport(0, 0, fb_w, fb_h);
         glClearColor(0.085f, 0.093f, 0.11f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        const FramebufferMapping fb{io.DisplaySize.x > 0 ? static_cast<float>(fb_w) / io.DisplaySize.x : 1.0f,
-                                    io.DisplaySize.y > 0 ? static_cast<float>(fb_h) / io.DisplaySize.y : 1.0f, fb_h};
         renderer.draw(session, trails, panes, view.camera, fb);
         shown_panes = panes;
         imgui.render();
 
         ++frames;
-        const bool last_frame = quitting || (options.frames && frames >= *options.frames);
+        const bool record_over = end_record_frame(record, session, fb_w, fb_h);
+        const bool last_frame = quitting || record_over || (options.frames && frames >= *options.frames);
         if (session.requests.screenshot) {
             take_screenshot(session.requests.screenshot_path, window.handle(), session, &session.requests);
             session.requests.screenshot = false;
@@ -225,14 +239,16 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
             title = t;
             glfwSetWindowTitle(window.handle(), title.c_str());
         }
-        if (!deterministic) {
+        if (!fixed_clock) {
             const double spent = std::chrono::duration<double>(Clock::now() - now).count();
             if (spent < frame_cap_s) std::this_thread::sleep_for(std::chrono::duration<double>(frame_cap_s - spent));
         }
     }
+    finish_recording(record, session);
     if (view.file) save_camera(*view.file, view.camera, view.room);
-    dump_state(options, session, frames, {view.camera, shown_panes, drag.aim});
-    return 0;
+    dump_state(options, session, frames, snapshot());
+    // --record that could not record (no ffmpeg, an unwritable folder) is a failed run.
+    return options.record && !record.error.empty() ? 1 : 0;
 }
 
 }  // namespace pl::app

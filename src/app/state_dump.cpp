@@ -102,6 +102,18 @@ nlohmann::json pinned_json(const ui::LabSession& s, std::size_t selected) {
     return pinned;
 }
 
+// The recorder: running or not, frames sent, the file being written and the last one finished.
+nlohmann::json record_json(const RecordControl* rec) {
+    if (!rec) return nullptr;
+    const bool active = rec->recorder.active();
+    return {{"active", active},
+            {"frames", active ? rec->recorder.frames() : 0},
+            {"fps", active ? rec->recorder.settings().fps : rec->next.fps},
+            {"file", active ? rec->recorder.settings().file.string() : std::string{}},
+            {"last_file", rec->last_file.string()},
+            {"error", rec->error}};
+}
+
 }  // namespace
 
 std::string write_state_dump(const std::filesystem::path& file, const ui::LabSession& s, long frames,
@@ -164,6 +176,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     }
     j["live_metrics"] = live;
     j["pinned_runs"] = pinned_json(s, selected);
+    j["recording"] = record_json(view.record);
     // The Sweep tab's last result: points, points run, and per series the first axis's value
     // where the shown metric is largest.
     const ui::SweepSummary sweep = ui::sweep_summary(s);
