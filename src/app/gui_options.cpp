@@ -15,7 +15,7 @@ ParsedGuiOptions parse_gui_options(int argc, char** argv) {
     std::string preset;
     long frames = 0;
     std::string screenshot, dump_state;
-    double time_scale = 1.0, fixed_dt = 0.0;
+    double time_scale = 1.0, fixed_dt = 0.0, max_fps = 0.0;
     app.add_option("preset", preset, "Preset JSON to open (default: presets/default.json in the data folder)");
     auto* frames_opt = app.add_option("--frames", frames, "Exit after N frames")->check(CLI::PositiveNumber);
     auto* shot_opt = app.add_option("--screenshot", screenshot, "Write a PNG of the last frame to this file");
@@ -25,6 +25,9 @@ ParsedGuiOptions parse_gui_options(int argc, char** argv) {
     auto* fixed_opt = app.add_option("--fixed-frame-dt", fixed_dt,
                                      "Advance every frame by this real time in seconds (deterministic runs)")
                           ->check(CLI::Range(1e-6, 1.0));
+    auto* max_fps_opt = app.add_option("--max-fps", max_fps,
+                                       "Draw at most N frames per second (default 120); physics runs at its own pace")
+                            ->check(CLI::Range(1.0, 1000.0));
     RecordSettings record;
     std::string record_file, record_area = "window";
     double record_seconds = 0.0;
@@ -54,6 +57,7 @@ ParsedGuiOptions parse_gui_options(int argc, char** argv) {
     if (*dump_opt) o.dump_state = dump_state;
     if (*scale_opt) o.time_scale = time_scale;
     if (*fixed_opt) o.fixed_frame_dt = fixed_dt;
+    if (*max_fps_opt) o.max_fps = max_fps;
     if (*record_opt) {
         if (const std::string bad = check_record_file(record_file, "--record"); !bad.empty()) {
             std::fprintf(stderr, "particle-lab: %s\n", bad.c_str());

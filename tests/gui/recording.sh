@@ -64,7 +64,7 @@ STATE="$WORK/state.json"
 start_app "$PRESET" --frames 1000000 --dump-state "$STATE"
 wait_for_state "$STATE" 'd["t"] > 0.2' "the default preset does not run"
 press F9
-wait_for_state "$STATE" 'd["recording"]["active"] and d["recording"]["frames"] >= 15' "F9 did not start a recording"
+wait_for_state "$STATE" 'd["recording"]["active"] and d["recording"]["frames"] >= 5' "F9 did not start a recording"
 press F9
 wait_for_state "$STATE" 'not d["recording"]["active"] and d["recording"]["last_file"]' "F9 did not stop the recording"
 file=$(json_get "$STATE" 'd["recording"]["last_file"]')
