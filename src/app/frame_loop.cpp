@@ -147,7 +147,10 @@ public:
             record_.next = *options.record;
             record_.quit_when_done = record_.toggle = true;
         }
-        physics_ = std::make_unique<PhysicsThread>(session_, before_steps_, after_steps_, !deterministic());
+        // A --record run is on the fixed clock from its first step: the thread must not step
+        // before the first frame switches it off, or two recordings would start apart.
+        physics_ = std::make_unique<PhysicsThread>(session_, before_steps_, after_steps_,
+                                                   !deterministic() && !options.record);
     }
 
     // One frame; false when the loop ends.
