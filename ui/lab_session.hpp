@@ -20,11 +20,13 @@ namespace pl::ui {
 struct PlotHistory;  // ui/plot_history.hpp: bounded per-series sample buffers
 struct PanelState;   // ui/panel_state.hpp: what the panels remember between frames
 struct PinBoard;     // ui/pinned_runs.hpp: runs kept beside the live one
+struct WarningTally; // ui/lab_ui.cpp: warnings and notes counted so far, per variant
 
 // What the shell measured this frame (shown in the status bar).
 struct FrameStats {
     double fps = 0.0;
-    double physics_ms = 0.0;       // time spent stepping this frame
+    double physics_ms = 0.0;       // time spent stepping since the last frame (the physics thread's, or this frame's)
+    double render_ms = 0.0;        // the last frame's own work: panels, drawing, presenting (not waits or sleeps)
     std::uint64_t substeps = 0;    // base steps run this frame
     bool behind = false;           // physics could not keep up with real time
     double real_time_factor = 0.0; // simulated seconds per real second, smoothed
@@ -73,6 +75,9 @@ struct LabSession {
     std::shared_ptr<PlotHistory> history;      // created by the ui on first use
     std::shared_ptr<PanelState> panels;        // created by the ui on first use
     std::shared_ptr<PinBoard> pins;            // created by the ui on first pin; survives loads and edits
+    // A cache of warning_count / note_count (counting reads every warning's drag model, and a
+    // large scene has one warning per particle): only warnings raised since the last count are read.
+    mutable std::shared_ptr<WarningTally> warning_tally;
     std::filesystem::path preset_dir;          // shipped presets (the shell finds them: app/data_dir.hpp)
 
     // 3D view options (the shell's view toolbar edits them; panels may too).

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <string>
+#include <vector>
 
 namespace pl::ui {
 
@@ -33,13 +34,43 @@ void note_item_rect(LabSession& s, const std::string& name) {
     s.widget_rects[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
 }
 
+struct WarningTally {
+    struct Variant {
+        const Simulation* sim = nullptr;
+        std::size_t read = 0;  // warnings counted
+        Warning first{};       // the first of them: a reset or a new run starts the list over
+        std::size_t at_risk = 0, notes = 0;
+    };
+    std::vector<Variant> variants;
+};
+
 namespace {
+
+bool same_warning(const Warning& a, const Warning& b) {
+    return a.kind == b.kind && a.particle == b.particle && a.t == b.t && a.value == b.value;
+}
+
+// Counts the warnings each variant raised since the last call; the engine only appends to a
+// run's list until a reset or a new experiment, which the first entry and the run's address tell.
+const WarningTally& tally_warnings(const LabSession& s) {
+    if (!s.warning_tally) s.warning_tally = std::make_shared<WarningTally>();
+    WarningTally& tally = *s.warning_tally;
+    const std::size_t count = s.experiment ? s.experiment->variant_count() : 0;
+    tally.variants.resize(count);
+    for (std::size_t v = 0; v < count; ++v) {
+        const Simulation& sim = s.experiment->run(v);
+        const std::vector<Warning>& list = sim.warnings();
+        WarningTally::Variant& t = tally.variants[v];
+        if (t.sim != &sim || list.size() < t.read || (t.read > 0 && !same_warning(list.front(), t.first))) t = {&sim};
+        for (; t.read < list.size(); ++t.read) (puts_number_at_risk(list[t.read], sim) ? t.at_risk : t.notes) += 1;
+        if (!list.empty()) t.first = list.front();
+    }
+    return tally;
+}
 
 std::size_t count_warnings(const LabSession& s, bool at_risk) {
     std::size_t n = 0;
-    if (s.experiment)
-        for (const Simulation& sim : s.experiment->runs())
-            for (const Warning& w : sim.warnings()) n += puts_number_at_risk(w, sim) == at_risk;
+    for (const WarningTally::Variant& v : tally_warnings(s).variants) n += at_risk ? v.at_risk : v.notes;
     return n;
 }
 
@@ -128,7 +159,10 @@ void draw_status_bar(LabSession& s) {
     separator();
     ImGui::Text("%llu substeps/frame", static_cast<unsigned long long>(s.frame.substeps));
     separator();
-    ImGui::Text("physics %.2f ms/frame", s.frame.physics_ms);
+    ImGui::Text("physics %.2f ms, render %.2f ms per frame", s.frame.physics_ms, s.frame.render_ms);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Physics runs in its own thread; this is its stepping time between two frames.\n"
+                          "Render is the frame's own work: panels, the 3D view and presenting it.");
     separator();
     ImGui::Text("%.0f FPS", s.frame.fps);
     const std::size_t warnings = warning_count(s);
@@ -208,6 +242,7 @@ void help_overlay(LabSession& s) {
         {"1 2 3 (shift: other side)", "look along x / y / z"},
         {"0", "reset the view"},
         {"F", "focus the selected particle"},
+        {"F9", "start / stop recording a video (file, format, area: the REC button)"},
         {"F1 or H", "this help"},
         {"Esc", "close dialogs, cancel an aim"},
         {"Ctrl+S", "save the preset over its file (previous kept as .bak)"},

@@ -1,6 +1,7 @@
-// Runs the physics for one GUI frame: real time x time scale -> whole fixed steps, within a
-// wall-clock budget so the UI never freezes (steps that do not fit are dropped and the frame is
-// reported behind; the trajectory itself never depends on the frame rate).
+// Runs the physics for one slice of real time (a slice of the physics thread, or a frame on the
+// fixed clock): real time x time scale -> whole fixed steps, within a wall-clock budget so the UI
+// is never shut out for long (steps that do not fit are dropped and the slice is reported
+// behind; the trajectory itself never depends on where slices fall).
 #pragma once
 
 #include "physics/stepping/experiment.hpp"
@@ -21,8 +22,13 @@ struct FrameAdvance {
 // Experiment::step_base call, which lets the kernel take several per call (Simulation::step_n).
 using AfterSteps = std::function<std::uint64_t()>;
 
-// `budget_s` <= 0 runs every step the clock asks for (deterministic test runs); otherwise the
-// budget is checked between groups of steps.
+// Runs `steps` base steps, or fewer when `budget_s` > 0 runs out (checked between groups of
+// steps; then `behind` is set).
+FrameAdvance run_steps(Experiment& experiment, std::uint64_t steps, double budget_s, const AfterSteps& after_steps);
+
+// The steps the experiment's clock owes for `real_dt_s` x `time_scale`, through run_steps: steps
+// the budget leaves out are dropped. `budget_s` <= 0 runs every step the clock asks for
+// (deterministic runs, recordings).
 FrameAdvance advance_frame(Experiment& experiment, double real_dt_s, double time_scale, double budget_s,
                            const AfterSteps& after_steps);
 

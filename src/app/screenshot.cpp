@@ -4,9 +4,15 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace pl::app {
+
+PixelRect to_pixels(float x, float y, float w, float h, float sx, float sy) {
+    return {static_cast<int>(std::lround(x * sx)), static_cast<int>(std::lround(y * sy)),
+            static_cast<int>(std::lround(w * sx)), static_cast<int>(std::lround(h * sy))};
+}
 
 std::string write_screenshot_png(const std::filesystem::path& file, int fb_width, int fb_height, PixelRect area) {
     const int x0 = std::clamp(area.x, 0, fb_width), y0 = std::clamp(area.y, 0, fb_height);

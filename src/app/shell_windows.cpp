@@ -42,7 +42,7 @@ LayoutMetrics layout_metrics() {
     return m;
 }
 
-ViewCommand draw_shell_windows(ui::LabSession& s, const ShellLayout& l, PanelCollapse& collapsed) {
+ViewCommand draw_shell_windows(ui::LabSession& s, const ShellLayout& l, PanelCollapse& collapsed, RecordControl& record) {
     s.widget_rects.clear();  // this frame's panels note theirs again
     collapsed.controls = panel("Experiment###controls", l.controls, [&] { ui::draw_control_panel(s); });
     collapsed.plots = panel("Plots###plots", l.plots, [&] { ui::draw_plots_panel(s); });
@@ -51,7 +51,7 @@ ViewCommand draw_shell_windows(ui::LabSession& s, const ShellLayout& l, PanelCol
     ViewCommand cmd;
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, bar_padding_y));
     place_next(l.toolbar);
-    if (ImGui::Begin("##view_toolbar", nullptr, bar_flags)) cmd = draw_view_toolbar(s);
+    if (ImGui::Begin("##view_toolbar", nullptr, bar_flags)) cmd = draw_view_toolbar(s, record);
     ImGui::End();
     place_next(l.status);
     if (ImGui::Begin("##status_bar", nullptr, bar_flags)) ui::draw_status_bar(s);

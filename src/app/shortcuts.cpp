@@ -50,6 +50,7 @@ ViewCommand apply_shortcuts(const std::vector<KeyPress>& keys, bool text_input_a
             case GLFW_KEY_F1:
             case GLFW_KEY_H: s.show_help = !s.show_help; break;
             case GLFW_KEY_F: view.focus_selected = true; break;
+            case GLFW_KEY_F9: view.toggle_recording = true; break;
             case GLFW_KEY_1: case GLFW_KEY_KP_1: view.axis = 0; view.from_negative = shift; break;
             case GLFW_KEY_2: case GLFW_KEY_KP_2: view.axis = 1; view.from_negative = shift; break;
             case GLFW_KEY_3: case GLFW_KEY_KP_3: view.axis = 2; view.from_negative = shift; break;

@@ -30,16 +30,21 @@ nlohmann::json screen_position(const ViewSnapshot& view, std::size_t variant, co
     return nullptr;
 }
 
+// The first particles of each variant: enough for any test, and a dump of a million-particle
+// scene (bench/gui_rtf.sh dumps one while its physics runs) stays small and quick.
+constexpr std::size_t max_dumped_particles = 1000;
+
 nlohmann::json variant_json(const Simulation& sim, std::size_t variant, const ViewSnapshot& view) {
     const ParticleState& st = sim.state();
     nlohmann::json particles = nlohmann::json::array();
-    for (std::size_t i = 0; i < st.size(); ++i)
+    for (std::size_t i = 0; i < std::min(st.size(), max_dumped_particles); ++i)
         particles.push_back({{"position", vec3(st.position(i))},
                              {"velocity", vec3(st.velocity(i))},
                              {"resting_walls", st.resting[i]},
                              {"frozen", st.frozen[i] != 0},
                              {"screen", screen_position(view, variant, st.position(i))}});
-    return {{"label", sim.model().label}, {"t", sim.time()}, {"steps", sim.step_count()}, {"particles", particles}};
+    return {{"label", sim.model().label}, {"t", sim.time()}, {"steps", sim.step_count()},
+            {"particle_count", st.size()}, {"particles", particles}};
 }
 
 // The aim in progress: its velocity and, for checking the mapping, where the particle and the
@@ -100,6 +105,18 @@ nlohmann::json pinned_json(const ui::LabSession& s, std::size_t selected) {
                               {"path_samples", paths}});
         }
     return pinned;
+}
+
+// The recorder: running or not, frames sent, the file being written and the last one finished.
+nlohmann::json record_json(const RecordControl* rec) {
+    if (!rec) return nullptr;
+    const bool active = rec->recorder.active();
+    return {{"active", active},
+            {"frames", active ? rec->recorder.frames() : 0},
+            {"fps", active ? rec->recorder.settings().fps : rec->next.fps},
+            {"file", active ? rec->recorder.settings().file.string() : std::string{}},
+            {"last_file", rec->last_file.string()},
+            {"error", rec->error}};
 }
 
 }  // namespace
@@ -164,6 +181,14 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     }
     j["live_metrics"] = live;
     j["pinned_runs"] = pinned_json(s, selected);
+    j["recording"] = record_json(view.record);
+    // The status bar's numbers (bench/gui_rtf.sh reads them).
+    j["frame_stats"] = {{"fps", s.frame.fps},
+                        {"real_time_factor", s.frame.real_time_factor},
+                        {"physics_ms", s.frame.physics_ms},
+                        {"render_ms", s.frame.render_ms},
+                        {"substeps", s.frame.substeps},
+                        {"behind", s.frame.behind}};
     // The Sweep tab's last result: points, points run, and per series the first axis's value
     // where the shown metric is largest.
     const ui::SweepSummary sweep = ui::sweep_summary(s);

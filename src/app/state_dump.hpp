@@ -3,6 +3,7 @@
 
 #include "app/camera.hpp"
 #include "app/launch_gesture.hpp"
+#include "app/record_controls.hpp"
 #include "app/view_panes.hpp"
 #include "ui/lab_session.hpp"
 
@@ -12,11 +13,12 @@
 namespace pl::app {
 
 // What the 3D view showed: the camera, the panes it drew (tests click particles through it) and
-// a launch being aimed.
+// a launch being aimed; and the recorder's state.
 struct ViewSnapshot {
     OrbitCamera camera;
     std::vector<ViewPane> panes;
     LaunchAim aim;
+    const RecordControl* record = nullptr;
 };
 
 // Written to a temporary file and renamed, so a reader never sees half a dump.

@@ -77,9 +77,11 @@ void pane_chooser(ui::LabSession& s) {
 
 }  // namespace
 
-ViewCommand draw_view_toolbar(ui::LabSession& s) {
+ViewCommand draw_view_toolbar(ui::LabSession& s, RecordControl& record) {
     ViewCommand cmd;
     char tip[256];
+    draw_record_controls(record, s);
+    ImGui::SameLine();
     toggle_button("Trails", s.show_trails, "Fading trails of the first particles of each variant and the selected one");
     ImGui::SameLine(0.0f, 2.0f);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 2.6f);
