@@ -132,7 +132,7 @@ const Case preset_cases[] = {
     {"dt_ladder.json", 4, 2500, 0x8bb2a6dd7ea465afull},
     {"feather_vs_ball.json", 0, 2500, 0xc974cd0efc0bb0dcull},
     {"feather_vs_ball.json", 1, 2500, 0x3a6468dfdd902358ull},
-    {"friction_slide.json", 0, 2500, 0x85a7195d4c0b2d80ull},
+    {"friction_slide.json", 0, 2500, 0xdd15bf4ab59f5cc5ull},
     {"integrators.json", 0, 2500, 0x537d48657de5c3a1ull},
     {"integrators.json", 1, 2500, 0x4f61aa412f104235ull},
     {"integrators.json", 2, 2500, 0xcf87683fd51f74feull},

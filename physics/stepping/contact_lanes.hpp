@@ -94,7 +94,6 @@ template <Flight M, class F>
         const Vec3 a0 = d0.a;
         // Semi-implicit Euler takes a step that reaches a wall on the parabola of its true
         // velocity u = v + a h / 2 (ParticleStepper, file comment).
-        const Vec3 u0 = staggered ? y0.v + (0.5 * h) * a0 : y0.v;
         // Selections by wall and axis as bit masks (exact, and they vectorise where a chain
         // of conditionals does not).
         const std::uint64_t w0 = wall == 0 ? ~std::uint64_t{0} : 0, w1 = wall == 1 ? ~std::uint64_t{0} : 0;
@@ -104,8 +103,12 @@ template <Flight M, class F>
         const double d_wall = select6(w0, y0.x.x - (lo_x + r), w1, (hi_x - r) - y0.x.x, w2, y0.x.y - (lo_y + r), w3,
                                       (hi_y - r) - y0.x.y, w4, y0.x.z - (lo_z + r), w5, (hi_z - r) - y0.x.z);
         const double sign = is_max ? -1.0 : 1.0;
-        const double v_axis = select3(ax, u0.x, ay, u0.y, az, u0.z);
         const double a_axis = select3(ax, a0.x, ay, a0.y, az, a0.z);
+        // A particle lying on the wall is not turned onto the parabola (ParticleStepper::lying);
+        // it rests at once, which the generic path does.
+        const bool lies = staggered & lies_on(d_wall, sign * select3(ax, y0.v.x, ay, y0.v.y, az, y0.v.z), sign * a_axis, h);
+        const Vec3 u0 = staggered & !lies ? y0.v + (0.5 * h) * a0 : y0.v;
+        const double v_axis = select3(ax, u0.x, ay, u0.y, az, u0.z);
         const double s_hit = first_contact_root(d_wall, sign * v_axis, sign * kappa * a_axis, h);
         FlightState start = y0;
         start.v = u0;
@@ -145,7 +148,7 @@ template <Flight M, class F>
         // Conservative: a finite state whose sum overflows, or faster than the runaway speed,
         // goes to the generic path too.
         const bool finite = all_finite(ox, oy, oz, loss, gain) & credible(ovx, ovy, ovz);
-        L.ok[j] = (crossed == 1) & !slow & (!go_on | end_inside) & finite;
+        L.ok[j] = (crossed == 1) & !slow & !lies & (!go_on | end_inside) & finite;
         L.x[j] = ox;
         L.y[j] = oy;
         L.z[j] = oz;

@@ -175,6 +175,12 @@ inline bool settles(double in, double out, double press, const ContactSettings& 
                              (out * out <= 2.0 * press * room.round_off) | (in <= press * lag)));
 }
 
+// The test of ParticleStepper::lying for one wall: distance d, normal velocity vn and
+// acceleration an (positive away from the wall), step h.
+inline bool lies_on(double d, double vn, double an, double h) {
+    return (d <= 0.0) & (vn <= 0.0) & (an < 0.0) & (-vn <= -an * h);
+}
+
 // The flight of a step of length s under the constant forces d (semi-implicit Euler's parabola,
 // file comment): exact for a constant acceleration.
 inline FlightState parabola(const FlightState& y, double s, const Derivative& d) {
@@ -227,7 +233,7 @@ public:
                     if (c_.room->distance(w, end.x, p.radius) >= 0.0) continue;
                     if (wall < 0 && polynomial_position()) {
                         d0 = on_parabola ? seg : f_(p.y.x, p.y.v, t);
-                        if (staggered() && !on_parabola) {
+                        if (staggered() && !on_parabola && !lying(p, d0.a, remaining)) {
                             p.y.v = p.y.v + (0.5 * remaining) * d0.a;  // v -> u (file comment)
                             on_parabola = true;
                             seg = d0;
@@ -362,6 +368,18 @@ private:
     }
 
     bool polynomial_position() const { return has_polynomial_position(c_.method); }
+
+    // Whether the particle lies on a wall that presses it, with a normal velocity into it no
+    // larger than the pressing acceleration gives in h: semi-implicit Euler's state of a particle
+    // at rest on a wall (its velocity lags by a h / 2), which takes no impact on its parabola
+    // (that impact's friction would brake a slide that has not started) but rests at once.
+    bool lying(const ParticleStep& p, const Vec3& a, double h) const {
+        for (int w = 0; w < wall_count; ++w) {
+            const Vec3 n = RoomBounds::inward_normal(w);
+            if (lies_on(c_.room->distance(w, p.y.x, p.radius), glm::dot(p.y.v, n), glm::dot(a, n), h)) return true;
+        }
+        return false;
+    }
     bool staggered() const { return c_.method == Method::semi_implicit_euler; }
 
     // Earliest s in [0, h] at which the sphere touches `wall`, given it is beyond it at s = h,
