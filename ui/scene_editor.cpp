@@ -235,9 +235,11 @@ void edit_contact_section(SceneEditor& ed, const std::function<ContactSettings&(
 void edit_integrator_section(SceneEditor& ed, const std::function<IntegratorSettings&(Scene&)>& at) {
     edit_fields(ed, at);
     const Method method = at(ed.current()).method;
-    const double limit = method_stability_limit(method);
+    const double limit = stability_limit(at(ed.current()));
     if (std::isfinite(limit)) ImGui::TextDisabled("order %d, stable for dt k < %.3g", method_order(method), limit);
     else ImGui::TextDisabled("order %d, stable for any dt k", method_order(method));
+    if (keeps_bounce_energy(method)) ImGui::TextDisabled("elastic bounces keep their energy");
+    else ImGui::TextDisabled("gains speed on every bounce arc: rests only for dt <= rest_speed (1-e)/(e g)");
 }
 
 }  // namespace pl::ui

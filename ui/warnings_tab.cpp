@@ -20,10 +20,13 @@ const char* kind_name(WarningKind k) {
         case WarningKind::stability: return "stability";
         case WarningKind::frozen: return "frozen (NaN)";
         case WarningKind::mach: return "Mach number";
+        case WarningKind::runaway: return "frozen (runaway speed)";
+        case WarningKind::impact_cap: return "frozen (impact cap)";
+        case WarningKind::no_rest: return "never rests (explicit Euler)";
     }
     return "?";
 }
-constexpr std::size_t kind_count = static_cast<std::size_t>(WarningKind::mach) + 1;
+constexpr std::size_t kind_count = warning_kind_count;
 
 struct Row {
     std::size_t variant;

@@ -107,4 +107,11 @@ double method_stability_limit(Method m) {
     return 2.0;
 }
 
+double stability_limit(const IntegratorSettings& integrator) {
+    if (integrator.method == Method::dopri5 && integrator.adaptive) return std::numeric_limits<double>::infinity();
+    return method_stability_limit(integrator.method);
+}
+
+bool keeps_bounce_energy(Method m) { return m != Method::explicit_euler; }
+
 }  // namespace pl

@@ -153,5 +153,13 @@ std::optional<WindKind> wind_kind_from_string(const std::string& s);
 int method_order(Method m);
 // Largest stable h*k for linear decay a = -k v; +inf where unconditionally stable.
 double method_stability_limit(Method m);
+// The limit on dt * k the stability guard holds a scene's integrator to: the method's, but none
+// (+inf) for adaptive Dormand-Prince, whose error control shortens its internal steps as the
+// drag stiffens (a stiff scene it solves correctly is not unstable).
+double stability_limit(const IntegratorSettings& integrator);
+// Whether an elastic bounce keeps the energy: every method's flight is exact (to the root
+// search's round-off) under a constant force, so a located impact state is exact, except
+// explicit Euler's, which gains about g dt of speed on every bounce arc.
+bool keeps_bounce_energy(Method m);
 
 }  // namespace pl

@@ -65,6 +65,7 @@ template <Flight M, class F>
                                                   const ContactSettings contact, const double t0, const double h,
                                                   const double air_density) {
     constexpr double kappa = position_kappa(method_of(M));
+    constexpr bool staggered = M == Flight::semi_implicit_euler;
     const double gx = forces.gravity.x, gy = forces.gravity.y, gz = forces.gravity.z;
     const WindField* const wind = forces.wind_field();
     const double lo_x = room.lo.x, lo_y = room.lo.y, lo_z = room.lo.z;
@@ -89,24 +90,33 @@ template <Flight M, class F>
             std::max(std::max(std::max(std::int64_t{c1}, std::int64_t{c2} * 2), std::int64_t{c3} * 3),
                      std::max(std::int64_t{c4} * 4, std::int64_t{c5} * 5));
         const bool is_max = (wall & 1) != 0;
-        const Vec3 a0 = f(y0.x, y0.v, t0).a;
+        const Derivative d0 = f(y0.x, y0.v, t0);
+        const Vec3 a0 = d0.a;
+        // Semi-implicit Euler takes a step that reaches a wall on the parabola of its true
+        // velocity u = v + a h / 2 (ParticleStepper, file comment).
         // Selections by wall and axis as bit masks (exact, and they vectorise where a chain
         // of conditionals does not).
         const std::uint64_t w0 = wall == 0 ? ~std::uint64_t{0} : 0, w1 = wall == 1 ? ~std::uint64_t{0} : 0;
         const std::uint64_t w2 = wall == 2 ? ~std::uint64_t{0} : 0, w3 = wall == 3 ? ~std::uint64_t{0} : 0;
         const std::uint64_t w4 = wall == 4 ? ~std::uint64_t{0} : 0, w5 = wall == 5 ? ~std::uint64_t{0} : 0;
         const std::uint64_t ax = w0 | w1, ay = w2 | w3, az = w4 | w5;
-        const double d0 = select6(w0, y0.x.x - (lo_x + r), w1, (hi_x - r) - y0.x.x, w2, y0.x.y - (lo_y + r), w3,
-                                  (hi_y - r) - y0.x.y, w4, y0.x.z - (lo_z + r), w5, (hi_z - r) - y0.x.z);
+        const double d_wall = select6(w0, y0.x.x - (lo_x + r), w1, (hi_x - r) - y0.x.x, w2, y0.x.y - (lo_y + r), w3,
+                                      (hi_y - r) - y0.x.y, w4, y0.x.z - (lo_z + r), w5, (hi_z - r) - y0.x.z);
         const double sign = is_max ? -1.0 : 1.0;
-        const double v_axis = select3(ax, y0.v.x, ay, y0.v.y, az, y0.v.z);
         const double a_axis = select3(ax, a0.x, ay, a0.y, az, a0.z);
-        const double s_hit = first_contact_root(d0, sign * v_axis, sign * kappa * a_axis, h);
-        const FlightState part = fixed_step<M>(y0, t0, s_hit, f);
+        // A particle lying on the wall is not turned onto the parabola (ParticleStepper::lying);
+        // it rests at once, which the generic path does.
+        const bool lies = staggered & lies_on(d_wall, sign * select3(ax, y0.v.x, ay, y0.v.y, az, y0.v.z), sign * a_axis, h);
+        const Vec3 u0 = staggered & !lies ? y0.v + (0.5 * h) * a0 : y0.v;
+        const double v_axis = select3(ax, u0.x, ay, u0.y, az, u0.z);
+        const double s_hit = first_contact_root(d_wall, sign * v_axis, sign * kappa * a_axis, h);
+        FlightState start = y0;
+        start.v = u0;
+        const FlightState part = staggered ? parabola(start, s_hit, d0) : fixed_step<M>(y0, t0, s_hit, f);
         const bool moved = s_hit > 0.0;
         FlightState y;
         y.x = Vec3(when(moved, part.x.x, y0.x.x), when(moved, part.x.y, y0.x.y), when(moved, part.x.z, y0.x.z));
-        y.v = Vec3(when(moved, part.v.x, y0.v.x), when(moved, part.v.y, y0.v.y), when(moved, part.v.z, y0.v.z));
+        y.v = Vec3(when(moved, part.v.x, u0.x), when(moved, part.v.y, u0.y), when(moved, part.v.z, u0.z));
         y.drag_loss = when(moved, part.drag_loss, y0.drag_loss);
         y.wind_gain = when(moved, part.wind_gain, y0.wind_gain);
         const double plane =
@@ -118,20 +128,27 @@ template <Flight M, class F>
         const double n_sign = is_max ? -1.0 : 1.0;
         const Vec3 normal(pick(ax, n_sign, 0.0), pick(ay, n_sign, 0.0), pick(az, n_sign, 0.0));
         const ImpactResult hit = impact(y.v, normal, contact);
-        const bool slow = hit.normal_speed_out < contact.rest_speed;
         y.v = hit.v_out;
+        const Derivative d1 = f(y.x, y.v, t);  // the forces after the impact: pressed on the wall?
+        const bool slow = settles(hit.normal_speed_in, hit.normal_speed_out, -glm::dot(d1.a, normal), contact, room,
+                                  remaining, staggered ? h : 0.0);
         const double speed_out = glm::length(y.v);
-        const FlightState y_end = fixed_step<M>(y, t, remaining, f);
-        const bool end_inside = clear_of_walls(room, y_end.x, r);
         const bool go_on = remaining > 0.0;
+        FlightState y_end = staggered ? parabola(y, remaining, d1) : fixed_step<M>(y, t, remaining, f);
+        const bool end_inside = clear_of_walls(room, y_end.x, r);
+        if constexpr (staggered) {
+            y_end.v -= (0.5 * h) * d1.a;  // u -> v
+            y.v -= (0.5 * h) * d1.a;
+        }
         const double ox = when(go_on, y_end.x.x, y.x.x), oy = when(go_on, y_end.x.y, y.x.y);
         const double oz = when(go_on, y_end.x.z, y.x.z), ovx = when(go_on, y_end.v.x, y.v.x);
         const double ovy = when(go_on, y_end.v.y, y.v.y), ovz = when(go_on, y_end.v.z, y.v.z);
         const double loss = when(go_on, y_end.drag_loss, y.drag_loss);
         const double gain = when(go_on, y_end.wind_gain, y.wind_gain);
-        // Conservative: a finite state whose sum overflows goes to the generic path too.
-        const bool finite = all_finite(ox, oy, oz, ovx, ovy) & all_finite(ovz, loss, gain, 0.0, 0.0);
-        L.ok[j] = (crossed == 1) & !slow & (!go_on | end_inside) & finite;
+        // Conservative: a finite state whose sum overflows, or faster than the runaway speed,
+        // goes to the generic path too.
+        const bool finite = all_finite(ox, oy, oz, loss, gain) & credible(ovx, ovy, ovz);
+        L.ok[j] = (crossed == 1) & !slow & !lies & (!go_on | end_inside) & finite;
         L.x[j] = ox;
         L.y[j] = oy;
         L.z[j] = oz;
@@ -147,7 +164,7 @@ template <Flight M, class F>
         L.speed_out[j] = speed_out;
         L.wall[j] = wall;
         L.notify[j] = hit.normal_speed_in > 0.0;
-        L.flights[j] = 1 + moved + go_on;
+        L.flights[j] = staggered ? 1 : 1 + moved + go_on;
     }
 }
 

@@ -16,7 +16,7 @@ using namespace fast;
 // Adds a range's counters and warnings to the kernel's (events are already in place).
 void merge(const KernelContext& k, const RangeOutput& out) {
     k.counters += out.counters;
-    for (const std::uint32_t i : out.frozen) k.warnings.raise(WarningKind::frozen, i, k.time());
+    for (const Warning& w : out.frozen) k.warnings.raise(w.kind, w.particle, w.t, w.value);
 }
 
 template <Flight M, class F>

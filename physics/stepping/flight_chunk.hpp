@@ -129,11 +129,9 @@ template <Flight M, class F, bool Identical, bool WholeVectors>
         // same decision. It also implies a finite position, so only the rest is checked below.
         const bool inside = (y1.x.x >= lo_x + r) & (y1.x.x <= hi_x - r) & (y1.x.y >= lo_y + r) &
                             (y1.x.y <= hi_y - r) & (y1.x.z >= lo_z + r) & (y1.x.z <= hi_z - r);
-        // Semi-implicit Euler moves by h * v1 (h > 0): an infinite or NaN v1 makes the position
-        // infinite or NaN, so `inside` already implies a finite velocity; the ledger is left.
-        const bool finite = M == Flight::semi_implicit_euler
-                                ? std::abs(y1.drag_loss) + std::abs(y1.wind_gain) <= DBL_MAX
-                                : all_finite(y1.v.x, y1.v.y, y1.v.z, y1.drag_loss, y1.wind_gain);
+        // A velocity beyond the runaway speed (Inf and NaN too) goes to the generic path, which
+        // freezes the particle.
+        const bool finite = (std::abs(y1.drag_loss) + std::abs(y1.wind_gain) <= DBL_MAX) & credible(y1.v.x, y1.v.y, y1.v.z);
         const bool take = inside & finite & free_lane;
         if constexpr (WholeVectors) {
             const std::uint64_t keep_new = take ? ~std::uint64_t{0} : 0;

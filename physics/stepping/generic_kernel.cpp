@@ -34,13 +34,11 @@ void generic_step(const KernelContext& k) {
         in.radius = s.radius[i];
         f.load(in);
         ParticleStep p = load_step(s, i, hints, s.radius[i]);
-        stepper.advance(p, static_cast<std::uint32_t>(i), t0, h);
-        if (!is_finite(p.y)) {
-            // Keep the last finite state and stop stepping this particle.
-            s.frozen[i] = 1;
-            k.events.events->push_back(
-                {t0, static_cast<std::uint32_t>(i), -1, EventKind::frozen, glm::length(s.velocity(i)), 0.0});
-            k.warnings.raise(WarningKind::frozen, static_cast<std::uint32_t>(i), t0);
+        const bool finished = stepper.advance(p, static_cast<std::uint32_t>(i), t0, h);
+        if (const StepFault fault = step_fault(p.y, finished); fault != StepFault::none) {
+            // Keep the last good state and stop stepping this particle.
+            const Warning w = freeze_particle(s, static_cast<std::uint32_t>(i), t0, fault, p.y, *k.events.events);
+            k.warnings.raise(w.kind, w.particle, w.t, w.value);
             continue;
         }
         store_step<F>(s, i, p, hints, s.mass[i]);

@@ -25,12 +25,17 @@ struct EventSink {
     void end_step() const;
 };
 
-// Where a kernel's warnings go: once per particle and kind (`warned` holds a bit per kind).
+// Where a kernel's warnings go: once per particle and kind (`warned` holds a bit per kind), and
+// once more for drag validity above the range (bit drag_above_range_bit): below it (a slow
+// particle near an apex, where drag is negligible) the warning is mostly a harmless note, and it
+// must not mask the real one of the same particle leaving the range upwards later.
 struct WarningSink {
     std::vector<Warning>* warnings;
     std::vector<std::uint8_t>* warned;
-    void raise(WarningKind kind, std::uint32_t particle, double t, double value = 0.0) const;
+    static constexpr unsigned drag_above_range_bit = 7;
+    void raise(WarningKind kind, std::uint32_t particle, double t, double value = 0.0, bool above_range = false) const;
 };
+static_assert(warning_kind_count <= WarningSink::drag_above_range_bit, "a bit per kind below the extra one");
 
 // Everything one kernel call works on.
 struct KernelContext {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "physics/stepping/contact.hpp"
+#include "physics/stepping/warnings.hpp"
 
 #include <bit>
 #include <cfloat>
@@ -18,6 +19,13 @@ namespace pl::fast {
 // generic path, which decides exactly as it always does.
 inline bool all_finite(double a, double b, double c, double d, double e) {
     return std::abs(a) + std::abs(b) + std::abs(c) + std::abs(d) + std::abs(e) <= DBL_MAX;
+}
+
+// Whether a velocity is below the runaway speed (step_fault), as a plain compare that
+// vectorises: |vx| + |vy| + |vz| >= |v|, so true implies the generic test passes (a false
+// merely sends the particle to the generic path). False for Inf and NaN too.
+inline bool credible(double vx, double vy, double vz) {
+    return std::abs(vx) + std::abs(vy) + std::abs(vz) <= runaway_speed_mps;
 }
 
 // a where mask is all ones, b where it is zero, as bit operations: GCC turns a select whose

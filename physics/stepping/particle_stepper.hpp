@@ -6,11 +6,24 @@
 //    (for adaptive Dormand-Prince, on its dense output inside the internal step that
 //    crossed, or that passed the wall and came back within it); the particle is advanced to
 //    the wall, the impact response is applied, and the rest of the step continues from there;
+//  * semi-implicit Euler's velocity at the end of a step is the velocity of the middle of it:
+//    under a constant acceleration a its positions lie on the exact parabola of the velocity
+//    u = v + a h / 2 (Hairer, Lubich & Wanner, Geometric Numerical Integration, I.1: the
+//    method conserves the modified energy u^2/2 - a.x). A step that reaches a wall is therefore
+//    taken on that parabola: v is turned into u, the impact is located on the parabola and
+//    applied to the true impact velocity, the rest of the step follows the parabola, and the
+//    end velocity is turned back (v = u - a h / 2). Split there into substeps of the method
+//    itself, every bounce arc lost speed (an elastic ball came to rest);
 //  * a particle resting on walls (rebound speed fell below rest_speed while the net force
-//    pressed it on the wall) moves in the wall's plane with the normal force cancelling the
-//    pressing acceleration and Coulomb friction mu N opposing sliding; static friction holds it
-//    when the tangential force is below mu N. Its normal velocity is exactly 0 and its
-//    position exactly on the plane, so it cannot jitter or sink.
+//    pressed it on the wall, or a rebound too slow to leave the wall within the step) moves in
+//    the wall's plane with the normal force cancelling the pressing acceleration and Coulomb
+//    friction mu N opposing sliding; static friction holds it when the tangential force is
+//    below mu N. Its normal velocity is exactly 0 and its position exactly on the plane, so it
+//    cannot jitter or sink;
+//  * walls reached at the same instant (a corner) take their impacts together (corner_impact),
+//    so the result does not depend on the order of the walls;
+//  * a step needing more than max_impacts_per_step impacts is not finished: advance says so and
+//    the kernel freezes the particle and reports it, as it does a non-finite or runaway state.
 #pragma once
 
 #include "physics/stepping/contact.hpp"
@@ -18,6 +31,7 @@
 #include "physics/stepping/integrators.hpp"
 #include "physics/stepping/kernel.hpp"
 
+#include <bit>
 #include <cmath>
 #include <vector>
 
@@ -44,6 +58,31 @@ struct ParticleStep {
 inline bool is_finite(const FlightState& y) {
     return std::isfinite(y.x.x) && std::isfinite(y.x.y) && std::isfinite(y.x.z) && std::isfinite(y.v.x) &&
            std::isfinite(y.v.y) && std::isfinite(y.v.z) && std::isfinite(y.drag_loss) && std::isfinite(y.wind_gain);
+}
+
+// Why a stepped particle is frozen instead of stored (none: it is stored).
+enum class StepFault : std::uint8_t { none, non_finite, runaway, impact_cap };
+
+// The fault of the state y after a step (`finished`: its impacts all fitted).
+inline StepFault step_fault(const FlightState& y, bool finished) {
+    if (!is_finite(y)) return StepFault::non_finite;
+    if (!finished) return StepFault::impact_cap;
+    return glm::dot(y.v, y.v) > runaway_speed_mps * runaway_speed_mps ? StepFault::runaway : StepFault::none;
+}
+
+inline WarningKind fault_warning(StepFault f) {
+    return f == StepFault::runaway ? WarningKind::runaway
+                                   : f == StepFault::impact_cap ? WarningKind::impact_cap : WarningKind::frozen;
+}
+
+// Freezes particle i (its last stored state is kept) after the step starting at t0 that ended
+// with fault f in state y; the frozen event, and the warning (its value: the speed the step
+// reached, for a runaway or the impact cap).
+inline Warning freeze_particle(ParticleState& s, std::uint32_t i, double t0, StepFault f, const FlightState& y,
+                               std::vector<Event>& events) {
+    s.frozen[i] = 1;
+    events.push_back({t0, i, -1, EventKind::frozen, glm::length(s.velocity(i)), 0.0});
+    return {fault_warning(f), i, t0, f == StepFault::non_finite ? 0.0 : glm::length(y.v)};
 }
 
 // Particle i of the state arrays as the stepper's working copy (`hints`: dopri5 only; `radius`:
@@ -112,13 +151,41 @@ inline double first_contact_root(double d0, double b, double c, double h) {
 }
 
 // Whether the method's position after a step of length s is x0 + s v0 + kappa s^2 a0, with a0
-// the acceleration at the step start: explicit Euler (kappa = 0), semi-implicit Euler (v0 + s a0
-// is the new velocity, so kappa = 1) and velocity Verlet (kappa = 1/2).
+// the acceleration at the step start: explicit Euler (kappa = 0) and velocity Verlet (kappa =
+// 1/2); semi-implicit Euler's is x0 + s u0 + s^2 a0 / 2 on the parabola of its true velocity
+// u0 (file comment), on which its impacts are located (kappa = 1/2 with v0 = u0).
 constexpr bool has_polynomial_position(Method m) {
     return m == Method::explicit_euler || m == Method::semi_implicit_euler || m == Method::velocity_verlet;
 }
-constexpr double position_kappa(Method m) {
-    return m == Method::semi_implicit_euler ? 1.0 : m == Method::velocity_verlet ? 0.5 : 0.0;
+constexpr double position_kappa(Method m) { return m == Method::explicit_euler ? 0.0 : 0.5; }
+
+// Rest instead of a rebound from normal speed `in` to `out` on a wall the net force presses on
+// with acceleration `press` (<= 0: not pressed), `remaining` of a step of length h left: below
+// the rest threshold, or when the whole series of rebounds e^k out ends within the step (it
+// lasts 2 out / (press (1 - e)), Zeno's sum), or the rebound would not rise above the room's
+// round-off (out^2 / (2 press) <= room.round_off: where a root search on a step from the wall
+// stops), or the impact is no faster than the pressing acceleration gives in `lag` (semi-
+// implicit Euler: h, its velocity lags by press h / 2, so a particle lying on the wall meets it
+// at that speed on its parabola). Then a particle pressed on the wall with no normal speed
+// rests whatever rest_speed is, also with rest_speed = 0 and e = 1.
+inline bool settles(double in, double out, double press, const ContactSettings& c, const RoomBounds& room,
+                    double remaining, double lag) {
+    return (out < c.rest_speed) |
+           ((press > 0.0) & ((out <= press * (0.5 * (1.0 - c.restitution) * remaining)) |
+                             (out * out <= 2.0 * press * room.round_off) | (in <= press * lag)));
+}
+
+// The test of ParticleStepper::lying for one wall: distance d, normal velocity vn and
+// acceleration an (positive away from the wall), step h.
+inline bool lies_on(double d, double vn, double an, double h) {
+    return (d <= 0.0) & (vn <= 0.0) & (an < 0.0) & (-vn <= -an * h);
+}
+
+// The flight of a step of length s under the constant forces d (semi-implicit Euler's parabola,
+// file comment): exact for a constant acceleration.
+inline FlightState parabola(const FlightState& y, double s, const Derivative& d) {
+    return {y.x + s * y.v + (0.5 * s * s) * d.a, y.v + s * d.a, y.drag_loss + s * d.drag_power,
+            y.wind_gain + s * d.wind_power};
 }
 
 // Time of impact on `wall` of a step starting at y whose position is that polynomial.
@@ -134,47 +201,70 @@ class ParticleStepper {
 public:
     ParticleStepper(const StepContext& ctx, const F& f) : c_(ctx), f_(f) {}
 
-    void advance(ParticleStep& p, std::uint32_t id, double t0, double h) const {
+    // Returns false when the step needed more than max_impacts_per_step impacts (p is then the
+    // state at the last of them; the caller freezes the particle).
+    bool advance(ParticleStep& p, std::uint32_t id, double t0, double h) const {
         double t = t0, remaining = h;
+        // Semi-implicit Euler once a wall is reached: p.y.v holds the true velocity u, `seg` the
+        // forces at the start of the parabola it follows (see the file comment).
+        bool on_parabola = false, seg_fresh = false;
+        Derivative seg{};
         for (int guard = 0; remaining > 0.0; ++guard) {
-            if (guard > 64) {  // pathological: keep the particle in the room and stop this step
-                p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
-                return;
-            }
+            if (guard > max_impacts_per_step) return false;
             if (p.resting) {
                 // The forces at the step start decide the release and drive the slide (the
                 // release changes only which walls hold the particle, not x or v).
                 const Derivative d = f_(p.y.x, p.y.v, t);
                 if (release_walls(p, id, t, d)) continue;
-                slide(p, id, t, remaining, d);
-                return;
+                slide(p, id, t, remaining, h, d);
+                return true;
             }
             int wall = -1;
+            std::uint8_t walls = 0;  // the walls reached at s_hit
             double s_hit = remaining;
             if (adaptive()) {
-                if (!adaptive_flight(p, t, remaining, wall, s_hit)) return;
+                if (!adaptive_flight(p, t, remaining, wall, s_hit)) return true;
+                walls = static_cast<std::uint8_t>(1u << wall);
             } else {
-                const FlightState end = flight(p, t, remaining);
-                Vec3 a0(0.0);
+                if (on_parabola && !seg_fresh) seg = f_(p.y.x, p.y.v, t);
+                const FlightState end = on_parabola ? parabola(p.y, remaining, seg) : flight(p, t, remaining);
+                Derivative d0{};
                 for (int w = 0; w < wall_count; ++w) {
                     if (c_.room->distance(w, end.x, p.radius) >= 0.0) continue;
-                    if (wall < 0 && polynomial_position()) a0 = f_(p.y.x, p.y.v, t).a;
-                    const double s = time_of_impact(p, w, t, remaining, a0);
-                    if (wall < 0 || s < s_hit) { wall = w; s_hit = s; }
+                    if (wall < 0 && polynomial_position()) {
+                        d0 = on_parabola ? seg : f_(p.y.x, p.y.v, t);
+                        if (staggered() && !on_parabola && !lying(p, d0.a, remaining)) {
+                            p.y.v = p.y.v + (0.5 * remaining) * d0.a;  // v -> u (file comment)
+                            on_parabola = true;
+                            seg = d0;
+                        }
+                    }
+                    const double s = time_of_impact(p, w, t, remaining, d0.a);
+                    if (wall < 0 || s < s_hit) {
+                        wall = w;
+                        s_hit = s;
+                        walls = 0;
+                    }
+                    if (s == s_hit) walls |= static_cast<std::uint8_t>(1u << w);
                 }
                 if (wall < 0) {
                     p.y = end;
-                    return;
+                    if (on_parabola) p.y.v -= (0.5 * h) * seg.a;  // u -> v
+                    return true;
                 }
-                if (s_hit > 0.0) p.y = flight(p, t, s_hit);
+                if (s_hit > 0.0) p.y = on_parabola ? parabola(p.y, s_hit, seg) : flight(p, t, s_hit);
             }
             ++*c_.contact_solves;
-            p.y.x[RoomBounds::axis(wall)] = c_.room->contact_plane(wall, p.radius);
+            for (int w = 0; w < wall_count; ++w)
+                if (walls & (1u << w)) p.y.x[RoomBounds::axis(w)] = c_.room->contact_plane(w, p.radius);
             p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
             t += s_hit;
             remaining -= s_hit;
-            hit_wall(p, id, wall, t);
+            seg_fresh = hit_walls(p, id, walls, t, remaining, h, seg);
+            if (p.resting) on_parabola = false;  // resting contact has its own velocity (slide)
         }
+        if (on_parabola) p.y.v -= (0.5 * h) * seg.a;
+        return true;
     }
 
 private:
@@ -279,6 +369,19 @@ private:
 
     bool polynomial_position() const { return has_polynomial_position(c_.method); }
 
+    // Whether the particle lies on a wall that presses it, with a normal velocity into it no
+    // larger than the pressing acceleration gives in h: semi-implicit Euler's state of a particle
+    // at rest on a wall (its velocity lags by a h / 2), which takes no impact on its parabola
+    // (that impact's friction would brake a slide that has not started) but rests at once.
+    bool lying(const ParticleStep& p, const Vec3& a, double h) const {
+        for (int w = 0; w < wall_count; ++w) {
+            const Vec3 n = RoomBounds::inward_normal(w);
+            if (lies_on(c_.room->distance(w, p.y.x, p.radius), glm::dot(p.y.v, n), glm::dot(a, n), h)) return true;
+        }
+        return false;
+    }
+    bool staggered() const { return c_.method == Method::semi_implicit_euler; }
+
     // Earliest s in [0, h] at which the sphere touches `wall`, given it is beyond it at s = h,
     // on the fixed-step method's own trajectory (the step re-run with length s): in closed form
     // where that trajectory is a polynomial in s (a0 = acceleration at the step start), by a
@@ -322,35 +425,50 @@ private:
         return hi;
     }
 
-    void hit_wall(ParticleStep& p, std::uint32_t id, int wall, double t) const {
-        const Vec3 n = RoomBounds::inward_normal(wall);
-        const double speed_in = glm::length(p.y.v);
-        ImpactResult r = impact(p.y.v, n, *c_.contact);
+    // The impact on `walls` (a bit mask: several where they are reached at the same instant) at
+    // time t, with `remaining` of the step (of length h) left. Sets `d` to the forces just after
+    // it and returns whether they still hold for the particle's state (no normal velocity was
+    // zeroed after them).
+    bool hit_walls(ParticleStep& p, std::uint32_t id, std::uint8_t walls, double t, double remaining, double h,
+                   Derivative& d) const {
+        const Vec3 v_in = p.y.v;
+        const double speed_in = glm::length(v_in);
+        const bool single = std::has_single_bit(walls);
+        const ImpactResult r = single ? impact(v_in, RoomBounds::inward_normal(std::countr_zero(walls)), *c_.contact)
+                                      : corner_impact(v_in, walls, *c_.contact);
         p.bounce_loss += r.bounce_loss_per_kg;
         p.friction_loss += r.friction_loss_per_kg;
         p.y.v = r.v_out;
-        EventKind kind = EventKind::bounce;
-        if (r.normal_speed_out < c_.contact->rest_speed) {
-            // Below the rest threshold the remaining micro-bounces (which would sum to a finite
-            // time, t0 (1+e)/(1-e) for a drop) are replaced by resting contact when the net force
-            // presses the particle on the wall. Against a wall nothing presses it on, a lossy
-            // wall (e < 1) still ends the slow normal motion, so it cannot creep forever.
-            const bool pressed = pressed_on(p, n, t);
-            if (pressed || c_.contact->restitution < 1.0) {
-                p.bounce_loss += 0.5 * r.normal_speed_out * r.normal_speed_out;
-                p.y.v -= glm::dot(p.y.v, n) * n;
+        d = f_(p.y.x, p.y.v, t);
+        bool fresh = true;
+        for (int wall = 0; wall < wall_count; ++wall) {
+            if (!(walls & (1u << wall))) continue;
+            const Vec3 n = RoomBounds::inward_normal(wall);
+            const double normal_in = single ? r.normal_speed_in : std::max(0.0, -glm::dot(v_in, n));
+            const double normal_out = c_.contact->restitution * normal_in;
+            EventKind kind = EventKind::bounce;
+            const double press = -glm::dot(d.a, n);
+            if (settles(normal_in, normal_out, press, *c_.contact, *c_.room, remaining, staggered() ? h : 0.0)) {
+                // Below the rest threshold (or too slow to leave the wall within the step) the
+                // remaining micro-bounces (which would sum to a finite time, t0 (1+e)/(1-e) for a
+                // drop) are replaced by resting contact when the net force presses the particle
+                // on the wall. Against a wall nothing presses it on, a lossy wall (e < 1) still
+                // ends the slow normal motion, so it cannot creep forever.
+                const bool pressed = press > 0.0;
+                if (pressed || c_.contact->restitution < 1.0) {
+                    p.bounce_loss += 0.5 * normal_out * normal_out;
+                    p.y.v -= glm::dot(p.y.v, n) * n;
+                    fresh = false;
+                }
+                if (pressed) {
+                    p.resting |= static_cast<std::uint8_t>(1u << wall);
+                    kind = EventKind::rest;
+                }
             }
-            if (pressed) {
-                p.resting |= static_cast<std::uint8_t>(1u << wall);
-                kind = EventKind::rest;
-            }
+            if (normal_in > 0.0 || kind == EventKind::rest)
+                c_.events->push_back({t, id, static_cast<std::int8_t>(wall), kind, speed_in, glm::length(p.y.v)});
         }
-        if (r.normal_speed_in > 0.0 || kind == EventKind::rest)
-            c_.events->push_back({t, id, static_cast<std::int8_t>(wall), kind, speed_in, glm::length(p.y.v)});
-    }
-
-    bool pressed_on(const ParticleStep& p, const Vec3& n, double t) const {
-        return glm::dot(f_(p.y.x, p.y.v, t).a, n) < 0.0;
+        return fresh;
     }
 
     // Leaves every resting wall that the particle is kicked or pulled away from; returns true
@@ -368,8 +486,8 @@ private:
         return p.resting == 0;
     }
 
-    // Resting contact for the rest of the step (first order, semi-implicit; see file comment).
-    void slide(ParticleStep& p, std::uint32_t id, double t, double h, const Derivative& d) const {
+    // Resting contact for the remaining h of the step of length `step` (see file comment).
+    void slide(ParticleStep& p, std::uint32_t id, double t, double h, double step, const Derivative& d) const {
         Vec3 a = d.a;
         double press = 0.0;
         for (int w = 0; w < wall_count; ++w) {
@@ -388,12 +506,33 @@ private:
         p.friction_loss += 0.5 * (speed * speed - glm::dot(v_new, v_new));
         p.y.drag_loss += h * d.drag_power;
         p.y.wind_gain += h * d.wind_power;
-        p.y.v = v_new;
-        if (was_moving && v_new == Vec3(0.0))
-            c_.events->push_back({t + h, id, -1, EventKind::stop, glm::length(v_free), 0.0});
-        if (v_new == Vec3(0.0)) return;
-        // Straight-line motion along the walls: walls it slides into are found exactly.
+        if (!was_moving && v_new == Vec3(0.0)) {  // held by static friction
+            p.y.v = v_new;
+            return;
+        }
+        // The mean velocity of the step moves the particle: the trapezoid (v + v_new) / 2, exact
+        // for constant forces; a particle that stops does so at the time of stop inside the step,
+        // tau = |v| / D with D its deceleration, having moved v tau / 2 (exact for constant
+        // friction, the slide's closed form v^2 / (2 mu g)). At the step end, as a first-order
+        // step, it had moved h v_new, stopped not at all: a stop distance off by v dt / 2.
+        double t_stop = h;
+        if (v_new == Vec3(0.0)) {
+            const double v_len = glm::length(p.y.v);
+            const double decel = c_.contact->friction * press - glm::dot(a, p.y.v) / v_len;
+            t_stop = decel > 0.0 ? std::min(h, v_len / decel) : h;
+            p.y.v = p.y.v * (0.5 * t_stop / h);
+            c_.events->push_back({t + t_stop, id, -1, EventKind::stop, v_len, 0.0});
+        } else {
+            p.y.v = 0.5 * (p.y.v + v_new);
+        }
+        if (!slide_along(p, id, t, h, step)) p.y.v = v_new;
+    }
+
+    // Straight-line motion at p.y.v for h along the walls (slide): walls it slides into are found
+    // exactly, and take an impact (p.y.v is then what the impacts left). Returns whether it hit one.
+    bool slide_along(ParticleStep& p, std::uint32_t id, double t, double h, double step) const {
         double remaining = h;
+        bool hit = false;
         for (int guard = 0; guard < 16 && remaining > 0.0; ++guard) {
             const Vec3 end = p.y.x + remaining * p.y.v;
             int wall = -1;
@@ -412,13 +551,16 @@ private:
             p.y.x += s_hit * p.y.v;
             p.y.x[RoomBounds::axis(wall)] = c_.room->contact_plane(wall, p.radius);
             remaining -= s_hit;
-            hit_wall(p, id, wall, t + h - remaining);
+            Derivative after;
+            hit_walls(p, id, static_cast<std::uint8_t>(1u << wall), t + h - remaining, remaining, step, after);
+            hit = true;
             if (p.y.v == Vec3(0.0)) {
                 c_.events->push_back({t + h - remaining, id, -1, EventKind::stop, 0.0, 0.0});
                 break;
             }
         }
         p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
+        return hit;
     }
 
     const StepContext& c_;

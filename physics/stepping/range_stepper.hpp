@@ -31,7 +31,7 @@ using namespace fast;
 struct alignas(128) RangeOutput {
     std::vector<Event>* events = nullptr;  // the simulation's sink when there is one range
     std::vector<Event> own_events;
-    std::vector<std::uint32_t> frozen;  // particles frozen during this step, in order
+    std::vector<Warning> frozen;  // the warnings of the particles frozen during this step, in order
     ForceCounters counters;
 };
 
@@ -323,7 +323,7 @@ private:
     // Writes lane j's bounce back to particle i, as ParticleStepper::advance would have.
     void commit_bounce(const BounceLanes& L, std::size_t j, std::uint32_t i) {
         count_evals(per_step_, static_cast<std::uint64_t>(L.flights[j]));
-        count_evals(per_call_, 1);  // the acceleration at the step start, for the time of impact
+        count_evals(per_call_, 2);  // the forces at the step start (time of impact) and after the impact
         ++contact_solves_;
         if (L.notify[j])
             out_->events->push_back(
@@ -380,11 +380,9 @@ private:
         f_.load(in);
         std::vector<double>* hints = adaptive_on_ ? &k_.adaptive_hint : nullptr;
         ParticleStep p = load_step(s_, i, hints, s_.radius[q]);
-        stepper_.advance(p, id, t0_, h_);
-        if (!is_finite(p.y)) {
-            s_.frozen[i] = 1;
-            out_->events->push_back({t0_, id, -1, EventKind::frozen, glm::length(s_.velocity(i)), 0.0});
-            out_->frozen.push_back(id);
+        const bool finished = stepper_.advance(p, id, t0_, h_);
+        if (const StepFault fault = step_fault(p.y, finished); fault != StepFault::none) {
+            out_->frozen.push_back(freeze_particle(s_, id, t0_, fault, p.y, *out_->events));
             return;
         }
         store_step<F>(s_, i, p, hints, s_.mass[q]);

@@ -35,6 +35,10 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
     warned_.assign(particles.size(), 0);
     if (model_.integrator.method == Method::dopri5) adaptive_step_hint_.assign(particles.size(), 0.0);
     kernel_ = pick_kernel(model_, kernel_choice_);
+    if (dt() > no_rest_dt(model_))
+        for (int w = 0; w < wall_count; ++w)
+            if (glm::dot(model_.world.gravity, RoomBounds::inward_normal(w)) < 0.0)
+                no_rest_floors_ |= static_cast<std::uint8_t>(1u << w);
     monitor();
 }
 
@@ -52,7 +56,11 @@ void Simulation::step_n(std::uint64_t n) {
     while (n > 0) {
         const std::uint64_t to_sample = period - steps_ % period;
         const std::uint64_t k = std::min({n, to_sample, steps_per_kernel_call});
+        const std::size_t first = events_.size();
+        const std::uint64_t dropped = dropped_events_;
         kernel_(context(), static_cast<std::uint32_t>(k));
+        // Events the cap dropped during the call were the oldest: the new ones start that much earlier.
+        if (no_rest_floors_) watch_rest(first - std::min<std::uint64_t>(first, dropped_events_ - dropped));
         monitor();
         n -= k;
     }

@@ -91,6 +91,9 @@ private:
     friend void relaunch_particle(Simulation& sim, std::size_t i, const Vec3& position, const Vec3& velocity);
     KernelContext context();  // the data a kernel call works on
     void monitor();  // NaN guard, validity ranges, stability guard
+    // The explicit-Euler rest trap (no_rest_dt): warns each particle that bounces on a floor
+    // (a wall gravity presses on) in the events from `first` on, when the model's dt is in it.
+    void watch_rest(std::size_t first);
     std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
 
     Model model_;
@@ -105,6 +108,7 @@ private:
     std::uint64_t dropped_events_ = 0;
     std::vector<Warning> warnings_;
     std::vector<std::uint8_t> warned_;  // per particle: bit per WarningKind
+    std::uint8_t no_rest_floors_ = 0;    // walls on which the model cannot come to rest (watch_rest)
     ForceCounters counters_;
     ReRange reynolds_{INFINITY, 0.0};
     double max_stiffness_ = 0.0;

@@ -39,6 +39,7 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
     constexpr auto validity_bit = 1u << static_cast<unsigned>(WarningKind::drag_validity);
     constexpr auto mach_bit = 1u << static_cast<unsigned>(WarningKind::mach);
     constexpr auto stability_bit = 1u << static_cast<unsigned>(WarningKind::stability);
+    constexpr auto above_bit = 1u << WarningSink::drag_above_range_bit;
     for (std::size_t c = begin; c < end; c += chunk) {
         const std::size_t n = std::min(end, c + chunk) - c;
         for (std::size_t j = 0; j < n; ++j) {
@@ -83,7 +84,9 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
             const std::int64_t k_bits = skip[j] == 0 ? std::bit_cast<std::int64_t>(k) : 0;
             max_k = k_bits > max_k ? k_bits : max_k;
             // Only what the particle has not been warned about yet.
-            const std::int64_t invalid = (u > 0.0) & ((re < lim.valid.lo) | (re > lim.valid.hi)) ? validity_bit : 0;
+            const std::int64_t invalid = (u > 0.0) & (re < lim.valid.lo) ? validity_bit
+                                         : (u > 0.0) & (re > lim.valid.hi) ? above_bit
+                                                                           : 0;
             const std::int64_t fast = u > mach_warning_speed ? mach_bit : 0;
             const std::int64_t unstable = k * lim.dt > lim.stability_limit ? stability_bit : 0;
             suspect[j] = (invalid | fast | unstable) & unwarned[j];
@@ -118,7 +121,7 @@ void Simulation::monitor() {
     if (model_.drag.model == DragModel::none) return;
     if (steps_ % monitor_period() != 0) return;
     const ReRange valid = drag_validity(model_.drag.model);
-    const double limit = method_stability_limit(model_.integrator.method);
+    const double limit = stability_limit(model_.integrator);
     const MonitorLimits lim{valid, dt(), limit};
     const ScanFn scan_range = pick_scan(model_, identical_particles_);
     const std::size_t n = state_.size();
@@ -144,11 +147,22 @@ void Simulation::monitor() {
         for (const std::uint32_t i : out.suspects) {
             const double u = glm::length(air_velocity(i));
             const double re = state_.drag_re_scale[i] * u;
-            if (u > 0.0 && (re < valid.lo || re > valid.hi)) sink.raise(WarningKind::drag_validity, i, time(), re);
+            if (u > 0.0 && (re < valid.lo || re > valid.hi))
+                sink.raise(WarningKind::drag_validity, i, time(), re, re > valid.hi);
             if (u > mach_warning_speed) sink.raise(WarningKind::mach, i, time(), u);
             const double k = drag_stiffness(model_.drag.model, {state_.drag_k[i], state_.drag_re_scale[i]}, u);
             if (k * dt() > limit) sink.raise(WarningKind::stability, i, time(), k);
         }
+    }
+}
+
+void Simulation::watch_rest(std::size_t first) {
+    const WarningSink sink{&warnings_, &warned_};
+    const double limit = no_rest_dt(model_);
+    for (std::size_t k = first; k < events_.size(); ++k) {
+        const Event& e = events_[k];
+        if (e.kind == EventKind::bounce && e.wall >= 0 && (no_rest_floors_ & (1u << e.wall)))
+            sink.raise(WarningKind::no_rest, e.particle, e.t, limit);
     }
 }
 

@@ -56,12 +56,12 @@ inline Slide slide_lane(const F& f, const RoomBounds& room, double friction, dou
     const double drag_loss = 0.0 + h * d.drag_power;
     const double wind_gain = 0.0 + h * d.wind_power;
     const bool still = (v_new.x == 0.0) & (v_new.y == 0.0) & (v_new.z == 0.0);
-    const Vec3 end = x + h * v_new;
+    const Vec3 end = x + h * (0.5 * (v + v_new));  // the mean velocity (ParticleStepper::slide)
     const bool end_inside = clear_of_walls(room, end, r);
     const Vec3 moved = clamp_inside(room, end, r);
     const Vec3 x_new(when(still, x.x, moved.x), when(still, x.y, moved.y), when(still, x.z, moved.z));
-    const bool finite = all_finite(x_new.x, x_new.y, x_new.z, v_new.x, v_new.y) &
-                        all_finite(v_new.z, drag_loss, wind_gain, friction_loss, 0.0);
+    const bool finite = all_finite(x_new.x, x_new.y, x_new.z, drag_loss, wind_gain) &
+                        all_finite(friction_loss, 0.0, 0.0, 0.0, 0.0) & credible(v_new.x, v_new.y, v_new.z);
     return {x_new.x, x_new.y, x_new.z, v_new.x, v_new.y, v_new.z, drag_loss, wind_gain, friction_loss,
             static_cast<bool>(!released & !(was_moving & still) & (still | end_inside) & finite)};
 }

@@ -4,7 +4,18 @@
 
 #include <fmt/format.h>
 
+#include <glm/geometric.hpp>
+
+#include <limits>
+
 namespace pl {
+
+double no_rest_dt(const Model& model) {
+    const double e = model.contact.restitution, g = glm::length(model.world.gravity);
+    if (model.integrator.method != Method::explicit_euler || !(e > 0.0 && e < 1.0) || !(g > 0.0))
+        return std::numeric_limits<double>::infinity();
+    return model.contact.rest_speed * (1.0 - e) / (e * g);
+}
 
 std::string warning_message(const Warning& w, const Model& model) {
     switch (w.kind) {
@@ -29,6 +40,19 @@ std::string warning_message(const Warning& w, const Model& model) {
             return fmt::format("particle {} frozen at t = {:.6g} s: its state became non-finite (NaN/Inf) during the "
                                "step; last finite state kept",
                                w.particle, w.t);
+        case WarningKind::runaway:
+            return fmt::format("particle {} frozen at t = {:.6g} s: its speed reached {:.3g} m/s, beyond the speed of "
+                               "light (a numerical blow-up); last state kept",
+                               w.particle, w.t, w.value);
+        case WarningKind::impact_cap:
+            return fmt::format("particle {} frozen at t = {:.6g} s: more than {} wall impacts in one step (speed "
+                               "{:.3g} m/s); last state kept",
+                               w.particle, w.t, max_impacts_per_step, w.value);
+        case WarningKind::no_rest:
+            return fmt::format("particle {}: explicit Euler cannot come to rest at dt = {:.3g} s (it gains speed on "
+                               "every bounce arc, so its rebounds never fall below rest_speed): use dt <= {:.3g} s "
+                               "= rest_speed (1 - e) / (e g), or another method",
+                               w.particle, model.integrator.dt, w.value);
     }
     return {};
 }

@@ -114,7 +114,7 @@ StabilityCell classify_stability(const StabilityBase& base, const StabilityCase&
     const double e0 = kinetic_energy(p.mass, p.velocity) + potential_energy(base.gravity, base.room, p.mass, p.position);
     const double energy_scale = std::max(e0, p.mass * g * 1e-3);
     const double steps_wanted = std::ceil(limits.max_duration_s / c.dt);
-    const auto steps = static_cast<std::uint64_t>(
+    auto steps = static_cast<std::uint64_t>(
         std::clamp(steps_wanted, static_cast<double>(limits.min_steps), static_cast<double>(limits.max_steps)));
 
     // Floor walls: those gravity presses a particle against.
@@ -128,6 +128,14 @@ StabilityCell classify_stability(const StabilityBase& base, const StabilityCase&
         // With drag the fall can be slower than in vacuum; only check when drag is weak over the bound.
         if (c.stiffness * rest_bound > 0.1) rest_bound = std::numeric_limits<double>::infinity();
     }
+    // The jitter check begins at the time-to-rest bound: a run shorter than it could not see a
+    // ball that never rests (explicit Euler's rest trap, no_rest_dt), so it is lengthened to
+    // pass the bound by a quarter of it, where bounces are looked for, up to rest_steps_factor
+    // times max_steps.
+    const double steps_to_bound = std::floor(1.25 * rest_bound / c.dt) + 2.0;
+    if (static_cast<double>(steps) * c.dt <= rest_bound &&
+        steps_to_bound <= static_cast<double>(limits.max_steps * StabilityRunLimits::rest_steps_factor))
+        steps = static_cast<std::uint64_t>(steps_to_bound);
     cell.jitter_checked = static_cast<double>(steps) * c.dt > rest_bound;
 
     Simulation sim(m, {p});
@@ -170,6 +178,15 @@ StabilityCell classify_stability(const StabilityBase& base, const StabilityCase&
                                           "time-to-rest bound {:.3g} s",
                                           e.t, wall_name(e.wall), e.speed_in, rest_bound));
         }
+    } else {
+        // Too long a run to reach the bound: the engine's own warning of the rest trap, raised
+        // at the first bounce on a floor, still tells.
+        for (const Warning& w : sim.warnings())
+            if (w.kind == WarningKind::no_rest)
+                return finish(StabilityOutcome::jitter,
+                              fmt::format("t = {:.6g} s: bouncing on a floor with explicit Euler at dt > "
+                                          "rest_speed (1 - e) / (e g) = {:.3g} s, it can never rest",
+                                          w.t, w.value));
     }
     return finish(StabilityOutcome::stable, "");
 }

@@ -19,7 +19,8 @@ enum class StabilityOutcome : std::uint8_t {
     energy_growth,  // KE + PE rose above E0 by more than energy_tolerance (no energy source here)
     nan,            // the state became non-finite (the particle was frozen)
     escaped,        // the sphere overlapped a wall (centre beyond its contact plane)
-    jitter,         // e < 1 but still bouncing on the floor after the time-to-rest bound
+    jitter,         // e < 1 but still bouncing on the floor after the time-to-rest bound (or
+                    // explicit Euler's rest trap seen before it, Warning no_rest)
     tunnelled,      // the centre passed through a wall (outside the room)
 };
 const char* to_string(StabilityOutcome o);
@@ -44,8 +45,10 @@ struct StabilityCell {
     std::string detail;             // what was seen, e.g. "t = 0.42 s: KE + PE = 3.1 E0"
 };
 
-// How long each cell runs: min(max_steps dt, max_duration_s), but at least min_steps steps.
+// How long each cell runs: min(max_steps dt, max_duration_s), but at least min_steps steps, and
+// past the time-to-rest bound where that takes at most rest_steps_factor max_steps steps.
 struct StabilityRunLimits {
+    static constexpr std::uint64_t rest_steps_factor = 25;
     std::uint64_t max_steps = 4000;
     std::uint64_t min_steps = 50;
     double max_duration_s = 5.0;

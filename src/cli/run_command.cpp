@@ -54,7 +54,7 @@ std::string output_conflict(const RunOptions& o) {
 // Warnings are raised once per particle and kind; a big scene can still raise thousands, so at
 // most `per_kind` of each kind are printed, followed by how many more there were.
 void print_warnings(const Simulation& sim, std::FILE* out, const std::string& prefix, std::size_t per_kind = 10) {
-    std::array<std::size_t, 4> seen{};
+    std::array<std::size_t, warning_kind_count> seen{};
     for (const Warning& w : sim.warnings()) {
         const auto k = static_cast<std::size_t>(w.kind);
         if (k < seen.size() && seen[k]++ >= per_kind) continue;
