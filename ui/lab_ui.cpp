@@ -210,7 +210,8 @@ void help_overlay(LabSession& s) {
         {"F", "focus the selected particle"},
         {"F1 or H", "this help"},
         {"Esc", "close dialogs, cancel an aim"},
-        {"Ctrl+S", "save the preset over its file (previous kept as .bak)"},
+        {"Ctrl+S", "save the preset over its file (previous kept as .bak); a shipped preset is\n"
+                   "read-only: Ctrl+S saves a copy into your presets folder (a file dialog asks the name)"},
         {"Ctrl+O", "type a preset's path, Enter opens it"},
         {"Ctrl+Q", "quit (asks if there are unsaved changes)"},
         {"plots: drag", "scroll back in time (stops following)"},
@@ -237,6 +238,7 @@ void help_overlay(LabSession& s) {
 void draw_popups(LabSession& s) {
     help_overlay(s);
     draw_unsaved_prompt(s);
+    draw_file_dialogs(s);
     error_modal(s);
 }
 

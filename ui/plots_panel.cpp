@@ -180,7 +180,7 @@ void handle_result(LabSession& s, const plot::PlotResult& r, const std::string& 
     if (r.export_png) ask_picture(s, export_path(p, name, ".png"), r.frame_min, r.frame_max);
 }
 
-void toolbar(PanelState& p, bool& export_csv, bool& export_png) {
+void toolbar(LabSession& s, PanelState& p, bool& export_csv, bool& export_png) {
     plot::TimeAxisLink& axis = p.time_axis;
     // No tooltips while a picture is pending: the mouse is still on the button that asked.
     const bool quiet = p.picture.frames_left >= 0;
@@ -209,6 +209,9 @@ void toolbar(PanelState& p, bool& export_csv, bool& export_png) {
     ImGui::SameLine();
     export_png = ImGui::SmallButton("PNG");
     tip("Save a picture of the plots to " + export_path(p, "plots", ".png").string());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("to...")) begin_choose_export_folder(s);
+    tip("Choose the folder exports go to (now " + export_path(p, "", "").parent_path().string() + ")");
 }
 
 void motion_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool export_csv) {
@@ -286,7 +289,8 @@ void ledger_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
 }  // namespace
 
 std::filesystem::path export_path(const PanelState& p, const std::string& plot, const char* extension) {
-    return std::filesystem::absolute(p.export_stem + "-" + plot + extension);
+    const std::string name = p.export_stem + "-" + plot + extension;
+    return std::filesystem::absolute(p.export_dir.empty() ? std::filesystem::path(name) : p.export_dir / name);
 }
 
 void write_csv(LabSession& s, const std::filesystem::path& file, const std::string& csv) {
@@ -311,7 +315,7 @@ void draw_plots_panel(LabSession& s) {
     const PlotHistory& h = history_of(s);
     pending_picture(s);
     bool export_csv = false, export_png = false;
-    toolbar(p, export_csv, export_png);
+    toolbar(s, p, export_csv, export_png);
     const ImVec2 region_min = ImGui::GetCursorScreenPos();
     if (ImGui::BeginTabBar("##plot_tabs")) {
         if (ImGui::BeginTabItem("Height, speed, energy")) {

@@ -2,6 +2,7 @@
 
 #include "app/picking.hpp"
 #include "io/metrics_json.hpp"
+#include "ui/panel_state.hpp"
 #include "ui/pinned_runs.hpp"
 #include "ui/plot_history.hpp"
 #include "ui/sections.hpp"
@@ -102,6 +103,18 @@ nlohmann::json pinned_json(const ui::LabSession& s, std::size_t selected) {
     return pinned;
 }
 
+// The file dialog while it shows (null otherwise): mode, folder, filename, the overwrite question.
+nlohmann::json file_dialog_json(const ui::LabSession& s) {
+    if (!s.panels || !s.panels->file_dialog.visible) return nullptr;
+    const ui::FileDialog& d = s.panels->file_dialog;
+    static constexpr const char* modes[] = {"open", "save", "folder"};
+    return {{"mode", modes[static_cast<int>(d.mode)]},
+            {"dir", d.dir.string()},
+            {"filename", d.filename},
+            {"overwrite", d.overwrite ? nlohmann::json(d.overwrite->string()) : nlohmann::json(nullptr)},
+            {"error", d.error}};
+}
+
 }  // namespace
 
 std::string write_state_dump(const std::filesystem::path& file, const ui::LabSession& s, long frames,
@@ -164,6 +177,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     }
     j["live_metrics"] = live;
     j["pinned_runs"] = pinned_json(s, selected);
+    j["file_dialog"] = file_dialog_json(s);
     // The Sweep tab's last result: points, points run, and per series the first axis's value
     // where the shown metric is largest.
     const ui::SweepSummary sweep = ui::sweep_summary(s);

@@ -12,10 +12,12 @@ fail() {
     exit 1
 }
 
-# A scratch directory removed at exit; XDG_CONFIG_HOME inside it so no user settings leak in.
+# A scratch directory removed at exit; XDG_CONFIG_HOME and XDG_DATA_HOME (the user's presets)
+# inside it so no user settings leak in and nothing is written into the user's folders.
 make_workdir() {
     WORK=$(mktemp -d)
     export XDG_CONFIG_HOME="$WORK/config"
+    export XDG_DATA_HOME="$WORK/data"
     APP_PID=""
     trap 'cleanup_app; rm -rf "$WORK"' EXIT
 }
