@@ -2,6 +2,7 @@
 
 #include "app/picking.hpp"
 #include "io/metrics_json.hpp"
+#include "ui/expectations_view.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/pinned_runs.hpp"
 #include "ui/plot_history.hpp"
@@ -178,6 +179,8 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     j["live_metrics"] = live;
     j["pinned_runs"] = pinned_json(s, selected);
     j["file_dialog"] = file_dialog_json(s);
+    // The preset's expectations beside the live measurements, as `compare --json` lists them.
+    j["expectations"] = cli::expectations_json(ui::live_expectations(s));
     // The Sweep tab's last result: points, points run, and per series the first axis's value
     // where the shown metric is largest.
     const ui::SweepSummary sweep = ui::sweep_summary(s);
