@@ -196,6 +196,8 @@ void help_overlay(LabSession& s) {
         {"R", "reset to the preset's initial state"},
         {"L", "launch particle 0 again with the Launch panel's velocity"},
         {"P", "pin this run: it stays beside the live run (plots, 3D view, Compare tab)"},
+        {"M", "measuring tool: click two points (a ball or a trail sample) to read the distance\n"
+              "and the time between them; Esc clears"},
         {"W A S D", "move the camera forward / left / back / right"},
         {"Q E", "move the camera down / up"},
         {"left drag", "orbit the camera around the room"},
@@ -209,7 +211,7 @@ void help_overlay(LabSession& s) {
         {"0", "reset the view"},
         {"F", "focus the selected particle"},
         {"F1 or H", "this help"},
-        {"Esc", "close dialogs, cancel an aim"},
+        {"Esc", "close dialogs, cancel an aim, clear a measurement"},
         {"Ctrl+S", "save the preset over its file (previous kept as .bak); a shipped preset is\n"
                    "read-only: Ctrl+S saves a copy into your presets folder (a file dialog asks the name)"},
         {"Ctrl+O", "type a preset's path, Enter opens it"},

@@ -14,6 +14,7 @@
 #include "app/shortcuts.hpp"
 #include "app/signals.hpp"
 #include "app/state_dump.hpp"
+#include "app/measure_tool.hpp"
 #include "app/trail_history.hpp"
 #include "app/view_input.hpp"
 #include "app/view_overlay.hpp"
@@ -194,7 +195,9 @@ int run_frame_loop(ui::LabSession& session, const GuiOptions& options) {
         const std::vector<ViewPane> panes = view_panes(layout.view, session.split_view, variant_count,
                                                        split_variants(session.split_variants, variant_count));
         const std::optional<HoveredParticle> hovered = handle_view_mouse(drag, view.camera, panes, session);
+        if (drag.clicked && session.measuring) measure_click(session, trails, panes, view.camera, drag.press_x, drag.press_y);
         draw_view_overlay(session, panes, view.camera, hovered);
+        draw_measure_overlay(session, panes, view.camera);
         draw_launch_aim(drag.aim, session, panes, view.camera);
         if (hovered) show_particle_tooltip(session, hovered->particle);
         ui::draw_popups(session);

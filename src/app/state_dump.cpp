@@ -104,6 +104,21 @@ nlohmann::json pinned_json(const ui::LabSession& s, std::size_t selected) {
     return pinned;
 }
 
+// The measuring tool: on or off, its points (with where they appear in the first pane showing
+// their variant), and with two points the distance and time between them.
+nlohmann::json measure_json(const ui::LabSession& s, const ViewSnapshot& view) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const ui::MeasuredPoint& p : s.measure_points)
+        points.push_back({{"position", vec3(p.position)}, {"t", p.t}, {"variant", p.variant}, {"particle", p.particle},
+                          {"screen", screen_position(view, p.variant, p.position)}});
+    nlohmann::json j = {{"active", s.measuring}, {"points", points}, {"distance_m", nullptr}, {"time_s", nullptr}};
+    if (s.measure_points.size() == 2) {
+        j["distance_m"] = glm::length(s.measure_points[1].position - s.measure_points[0].position);
+        j["time_s"] = std::abs(s.measure_points[1].t - s.measure_points[0].t);
+    }
+    return j;
+}
+
 // The file dialog while it shows (null otherwise): mode, folder, filename, the overwrite question.
 nlohmann::json file_dialog_json(const ui::LabSession& s) {
     if (!s.panels || !s.panels->file_dialog.visible) return nullptr;
@@ -179,6 +194,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     j["live_metrics"] = live;
     j["pinned_runs"] = pinned_json(s, selected);
     j["file_dialog"] = file_dialog_json(s);
+    j["measure"] = measure_json(s, view);
     // The preset's expectations beside the live measurements, as `compare --json` lists them.
     j["expectations"] = cli::expectations_json(ui::live_expectations(s));
     // The Sweep tab's last result: points, points run, and per series the first axis's value
