@@ -21,30 +21,24 @@ void draw_expectations(LabSession& s) {
     if (s.scene.expect.empty()) return;
     const std::vector<ExpectationResult> results = live_expectations(s);
     const bool several_variants = s.experiment && s.experiment->variant_count() > 1;
-    ImGui::TextDisabled("Expected (from the preset) and measured in this run");
-    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV;
-    if (!ImGui::BeginTable("##expectations", 3, flags)) return;
-    ImGui::TableSetupColumn("quantity");
-    ImGui::TableSetupColumn("expected");
-    ImGui::TableSetupColumn("measured");
-    ImGui::TableHeadersRow();
+    ImGui::Spacing();
+    ImGui::TextDisabled("Expected (preset) -> measured (this run)");
+    // Two lines each, the quantity then the numbers: the control panel is narrow.
     for (std::size_t i = 0; i < results.size(); ++i) {
         const ExpectationResult& r = results[i];
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
         std::string what = to_string(r.expected.quantity);
-        if (r.expected.particle > 0) what += fmt::format(" (particle {})", r.expected.particle);
+        if (r.expected.particle > 0) what += fmt::format(", particle {}", r.expected.particle);
         if (several_variants) what += ", " + variant_name(s, r.expected.variant);
-        ImGui::TextUnformatted(what.c_str());
-        ImGui::TableNextColumn();
-        ImGui::Text("%.4g +- %.2g", r.expected.value, r.expected.tolerance);
-        ImGui::TableNextColumn();
+        ImGui::BulletText("%s", what.c_str());
+        ImGui::Indent();
+        ImGui::Text("%.4g +- %.2g  ->", r.expected.value, r.expected.tolerance);
+        ImGui::SameLine();
         if (!r.measured) ImGui::TextDisabled("not yet");
-        else if (r.met) ImGui::TextColored({0.45f, 0.9f, 0.45f, 1.0f}, "%.4g  ok", *r.measured);
-        else ImGui::TextColored({1.0f, 0.7f, 0.3f, 1.0f}, "%.4g  off by %.2g", *r.measured, *r.measured - r.expected.value);
+        else if (r.met) ImGui::TextColored({0.45f, 0.9f, 0.45f, 1.0f}, "%.4g (within)", *r.measured);
+        else ImGui::TextColored({1.0f, 0.7f, 0.3f, 1.0f}, "%.4g (off by %+.2g)", *r.measured, *r.measured - r.expected.value);
         note_item_rect(s, "expect.row" + std::to_string(i));
+        ImGui::Unindent();
     }
-    ImGui::EndTable();
 }
 
 }  // namespace pl::ui

@@ -13,8 +13,8 @@ namespace pl::ui {
 // particles than PlotHistory::max_metrics_particles) or the quantity has no value yet.
 std::vector<ExpectationResult> live_expectations(const LabSession& s);
 
-// A table under the description: quantity, variant and particle, expected +- tolerance,
-// measured (green when within tolerance).
+// Under the description, per expectation: the quantity (with its particle and variant), then
+// expected +- tolerance and the measured value (green when within the tolerance).
 void draw_expectations(LabSession& s);
 
 }  // namespace pl::ui
