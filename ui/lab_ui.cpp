@@ -241,6 +241,7 @@ void draw_popups(LabSession& s) {
     help_overlay(s);
     draw_unsaved_prompt(s);
     draw_file_dialogs(s);
+    draw_export_question(s);
     error_modal(s);
 }
 

@@ -18,6 +18,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace pl::ui {
@@ -33,6 +34,12 @@ struct PendingPicture {
     int frames_left = -1;  // < 0: none
     std::filesystem::path path;
     ImVec2 min, max;
+};
+
+// Exports held back because their file exists, until the user answers Overwrite / Cancel.
+struct PendingExports {
+    std::vector<std::pair<std::filesystem::path, std::string>> csv;  // file, text
+    std::optional<PendingPicture> picture;
 };
 
 struct StabilitySettings {
@@ -64,6 +71,7 @@ struct PanelState {
     std::string export_stem = "particle-lab";  // files go to <export_dir>/<stem>-<plot>.csv/.png
     std::filesystem::path export_dir;          // chosen in the file dialog; empty: the working directory
     PendingPicture picture;
+    PendingExports export_question;  // ui/export_question.cpp
 
     // ---- control panel
     FieldEdits fields;

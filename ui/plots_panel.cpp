@@ -208,6 +208,7 @@ void toolbar(LabSession& s, PanelState& p, bool& export_csv, bool& export_png) {
     tip("Export the visible data of these plots to " + export_path(p, "<plot>", ".csv").string());
     ImGui::SameLine();
     export_png = ImGui::SmallButton("PNG");
+    ui::note_item_rect(s, "plots.png");
     tip("Save a picture of the plots to " + export_path(p, "plots", ".png").string());
     ImGui::SameLine();
     if (ImGui::SmallButton("to...")) begin_choose_export_folder(s);
@@ -293,22 +294,6 @@ std::filesystem::path export_path(const PanelState& p, const std::string& plot, 
     return std::filesystem::absolute(p.export_dir.empty() ? std::filesystem::path(name) : p.export_dir / name);
 }
 
-void write_csv(LabSession& s, const std::filesystem::path& file, const std::string& csv) {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << csv;
-    out.close();
-    if (!out) {
-        s.error_popup = "Could not write " + file.string() + " (is the folder writable?)";
-        return;
-    }
-    s.status_message = "Wrote " + file.string();
-}
-
-void ask_picture(LabSession& s, const std::filesystem::path& file, ImVec2 min, ImVec2 max) {
-    PanelState& p = panels_of(s);
-    p.picture = {2, file, min, max};
-}
-
 void draw_plots_panel(LabSession& s) {
     if (!s.experiment) return;
     PanelState& p = panels_of(s);
@@ -330,7 +315,7 @@ void draw_plots_panel(LabSession& s) {
         }
         ImGui::EndTabBar();
     }
-    if (export_csv) {
+    if (export_csv && !export_question_open(s)) {
         // handle_result wrote one file per plot; name them all in the status line.
         s.status_message = "Wrote " + export_path(p, p.plots_tab == 0 ? "{height,speed,kinetic}" : "{ledger,residual}", ".csv").string();
     }

@@ -45,8 +45,12 @@ bool save_scene_to(LabSession& s, const std::filesystem::path& file);
 // Plot exports: <export folder (default: cwd)>/<export stem>-<plot><extension>; CSV text written there (status line or
 // error dialog); a picture of [min, max] taken two frames later (the menu that asked is gone).
 std::filesystem::path export_path(const PanelState& p, const std::string& plot, const char* extension);
+// A file that exists already is not written until the user answers "Overwrite?" (Overwrite /
+// Cancel: draw_export_question, ui/export_question.cpp).
 void write_csv(LabSession& s, const std::filesystem::path& file, const std::string& csv);
 void ask_picture(LabSession& s, const std::filesystem::path& file, ImVec2 min, ImVec2 max);
+bool export_question_open(const LabSession& s);
+void draw_export_question(LabSession& s);
 void draw_sweep_tab(LabSession& s);
 // The Sweep tab's last result for the state dump: points, points run, and per line series its
 // label and the first axis's value at the series' largest metric value.

@@ -194,6 +194,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     j["live_metrics"] = live;
     j["pinned_runs"] = pinned_json(s, selected);
     j["file_dialog"] = file_dialog_json(s);
+    j["export_question"] = ui::export_question_open(s);
     j["measure"] = measure_json(s, view);
     // The preset's expectations beside the live measurements, as `compare --json` lists them.
     j["expectations"] = cli::expectations_json(ui::live_expectations(s));

@@ -176,3 +176,14 @@ click_widget() {
     read -r x y < <(widget_center "$state" "$name")
     xdotool mousemove --window "$APP_WINDOW" "$x" "$y" click 1
 }
+
+# An edit as a user makes it: a new dt typed into the Time section's field (clicked through the
+# state dump $STATE); waits until the scene is dirty with dt = $EDITED_DT.
+edit_dt() {
+    click_widget "$STATE" time.dt
+    wait_for_state "$STATE" 'd["text_input"]' "a click on the dt field did not put the keyboard in it"
+    xdotool key ctrl+a
+    xdotool type --delay 4 "$EDITED_DT"
+    hold_key Return
+    wait_for_state "$STATE" "d['dirty'] and d['scene_dt'] == $EDITED_DT and not d['text_input']" "editing dt did not apply"
+}

@@ -19,15 +19,6 @@ SHIPPED="$WORK/share/particle-lab/presets/default.json"
 USER_DIR="$XDG_DATA_HOME/particle-lab/presets"
 EDITED_DT=0.004
 
-edit_dt() {
-    click_widget "$STATE" time.dt
-    wait_for_state "$STATE" 'd["text_input"]' "a click on the dt field did not put the keyboard in it"
-    xdotool key ctrl+a
-    xdotool type --delay 4 "$EDITED_DT"
-    hold_key Return
-    wait_for_state "$STATE" "d['dirty'] and d['scene_dt'] == $EDITED_DT and not d['text_input']" "editing dt did not apply"
-}
-
 # Waits for the save dialog with the keyboard in its filename field.
 wait_save_dialog() {
     wait_for_state "$STATE" "d['file_dialog'] is not None and d['file_dialog']['mode'] == 'save' and d['text_input']" \
