@@ -10,6 +10,7 @@
 namespace pl::ui {
 
 std::vector<ExpectationResult> live_expectations(const LabSession& s) {
+    if (s.scene.expect.empty()) return {};
     std::vector<VariantMetrics> measured;
     if (s.experiment && s.history && s.history->trackers.size() == s.experiment->variant_count())
         for (std::size_t v = 0; v < s.experiment->variant_count(); ++v)
