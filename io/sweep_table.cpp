@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
@@ -91,6 +93,64 @@ std::string check_slice(const SweepFile& f) {
     return "";
 }
 
+// The JSON document of a sweep, row by row: from the results (sweep --json) or from a merged CSV
+// (sweep-merge --json), so that both write the same bytes for the same sweep.
+class SweepJson {
+public:
+    SweepJson(const SweepHeader& header, std::vector<std::string> names) : names_(std::move(names)) {
+        j_["sweep"] = header.id;
+        j_["points"] = header.points;
+        j_["shard"] = fmt::format("{}/{}", header.shard.index, header.shard.count);
+        j_["axes"] = names_;
+    }
+    void row(std::size_t point, const std::vector<std::string>& values, const std::string& variant,
+             const std::string& metric, const std::optional<double>& value) {
+        Json r;
+        r["point"] = point;
+        for (std::size_t c = 0; c < names_.size(); ++c) {
+            Json v = Json::parse(values[c], nullptr, false);  // 0.5, [5,5,0]; a bare word stays text
+            r[names_[c]] = v.is_discarded() ? Json(values[c]) : v;
+        }
+        r["variant"] = variant;
+        r["metric"] = metric;
+        r["value"] = value ? Json(*value) : Json(nullptr);
+        rows_.push_back(std::move(r));
+    }
+    std::string text() {
+        j_["rows"] = std::move(rows_);
+        return j_.dump(2) + "\n";
+    }
+
+private:
+    std::vector<std::string> names_;
+    Json j_;
+    Json rows_ = Json::array();
+};
+
+// The fields of one CSV line as CsvWriter writes them (RFC 4180: quoted when they hold a comma
+// or a quote, "" for a quote).
+std::vector<std::string> csv_fields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') out.back() += '"', ++i;
+        else if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) out.emplace_back();
+        else out.back() += c;
+    }
+    return out;
+}
+
+std::optional<double> value_of(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    if (text == "nan") return std::numeric_limits<double>::quiet_NaN();
+    if (text == "inf" || text == "-inf") return text[0] == '-' ? -HUGE_VAL : HUGE_VAL;
+    double v = 0.0;
+    std::from_chars(text.data(), text.data() + text.size(), v);  // format_double's shortest round trip
+    return v;
+}
+
 }  // namespace
 
 std::string sweep_csv(const SweepHeader& header, const SweepSpec& spec, const PreparedSweep& prepared,
@@ -115,29 +175,11 @@ std::string sweep_csv(const SweepHeader& header, const SweepSpec& spec, const Pr
 
 std::string sweep_json(const SweepHeader& header, const SweepSpec& spec, const PreparedSweep& prepared,
                        const SweepResults& results) {
-    Json j;
-    j["sweep"] = header.id;
-    j["points"] = header.points;
-    j["shard"] = fmt::format("{}/{}", header.shard.index, header.shard.count);
-    const std::vector<std::string> names = spec.plan.column_names();
-    j["axes"] = names;
-    Json rows = Json::array();
+    SweepJson json(header, spec.plan.column_names());
     for_each_row(spec, prepared, results,
                  [&](std::size_t point, const std::vector<std::string>& values, const std::string& variant,
-                     const char* metric, const std::optional<double>& value) {
-                     Json r;
-                     r["point"] = point;
-                     for (std::size_t c = 0; c < names.size(); ++c) {
-                         Json v = Json::parse(values[c], nullptr, false);  // 0.5, [5,5,0]; a bare word stays text
-                         r[names[c]] = v.is_discarded() ? Json(values[c]) : v;
-                     }
-                     r["variant"] = variant;
-                     r["metric"] = metric;
-                     r["value"] = value ? Json(*value) : Json(nullptr);
-                     rows.push_back(std::move(r));
-                 });
-    j["rows"] = std::move(rows);
-    return j.dump(2) + "\n";
+                     const char* metric, const std::optional<double>& value) { json.row(point, values, variant, metric, value); });
+    return json.text();
 }
 
 std::optional<SweepFile> read_sweep_file(const fs::path& file, std::string& error) {
@@ -216,6 +258,30 @@ std::string merge_sweep_files(const std::vector<SweepFile>& shards, const std::v
     std::string out = header_lines({first.header.id, first.header.points, Shard{}}) + first.columns + "\n";
     for (const auto& [point, line] : rows) out += *line + "\n";
     return out;
+}
+
+std::string merged_sweep_json(const std::vector<SweepFile>& shards, const std::vector<std::string>& names,
+                              std::string& error) {
+    const std::string csv = merge_sweep_files(shards, names, error);
+    if (!error.empty()) return "";
+    const SweepFile& first = shards.front();
+    std::vector<std::string> columns = csv_fields(first.columns);  // point, axes..., variant, metric, value
+    const std::size_t axes = columns.size() - 4;
+    SweepJson json({first.header.id, first.header.points, Shard{}},
+                   std::vector<std::string>(columns.begin() + 1, columns.begin() + 1 + static_cast<std::ptrdiff_t>(axes)));
+    std::istringstream in(csv);
+    std::string line;
+    for (int skip = 0; skip < 3; ++skip) std::getline(in, line);  // the two header lines, the columns
+    while (std::getline(in, line)) {
+        const std::vector<std::string> f = csv_fields(line);
+        if (f.size() != columns.size()) {
+            error = fmt::format("a row has {} fields, the columns {}: '{}'", f.size(), columns.size(), line.substr(0, 80));
+            return "";
+        }
+        const std::vector<std::string> values(f.begin() + 1, f.begin() + 1 + static_cast<std::ptrdiff_t>(axes));
+        json.row(std::stoull(f[0]), values, f[axes + 1], f[axes + 2], value_of(f[axes + 3]));
+    }
+    return json.text();
 }
 
 std::string write_file_atomically(const fs::path& file, const std::string& text) {

@@ -48,6 +48,11 @@ std::optional<SweepFile> read_sweep_file(const std::filesystem::path& file, std:
 std::string merge_sweep_files(const std::vector<SweepFile>& shards, const std::vector<std::string>& names,
                               std::string& error);
 
+// The same shards joined into the JSON document `sweep --json` writes for the whole run, byte
+// for byte.
+std::string merged_sweep_json(const std::vector<SweepFile>& shards, const std::vector<std::string>& names,
+                              std::string& error);
+
 // Writes `text` to `file` whole or not at all (io/atomic_output.hpp: a unique temporary file
 // beside it, synced and renamed over it). Returns an error or "".
 std::string write_file_atomically(const std::filesystem::path& file, const std::string& text);

@@ -15,6 +15,13 @@ namespace {
 // usually a frame past t = 0 already: the metrics and the first samples then start from the
 // scene's initial state (what every fresh or reset experiment starts from), so nothing of the
 // first frame is lost; the events of that frame are still pending and get observed next.
+// Initial energies of the particles the ui can launch again (the tracked ones): a copy for every
+// particle would cost 8 bytes each at millions.
+std::vector<double> watched_energies(const Simulation& sim) {
+    const auto& e = sim.state().initial_energy;
+    return {e.begin(), e.begin() + static_cast<std::ptrdiff_t>(std::min(e.size(), PlotHistory::max_tracked_particles))};
+}
+
 void start_tracking(PlotHistory& h, const Experiment& e) {
     h.reset(e.variant_count(), e.variant_count() > 0 ? e.run(0).particle_count() : 0);
     h.source = &e;
@@ -31,12 +38,12 @@ void start_tracking(PlotHistory& h, const Experiment& e) {
         c.dropped_events = sim.dropped_events();
         if (!metrics || initial.size() != sim.particle_count()) {
             c.observed_steps = sim.step_count();
-            c.initial_energy.assign(sim.state().initial_energy.begin(), sim.state().initial_energy.end());
+            c.initial_energy = watched_energies(sim);
             continue;
         }
         const Simulation start(sim.model(), initial);  // the state at t = 0
         c.observed_steps = 0;
-        c.initial_energy.assign(start.state().initial_energy.begin(), start.state().initial_energy.end());
+        c.initial_energy = watched_energies(start);
         h.trackers.push_back(start_metrics(start));
         std::vector<ParticleTrack>& tracks = h.variants[v].particles;
         const double floor_y = start.model().room.floor_y();
@@ -260,7 +267,7 @@ void kick_particle(LabSession& s, std::size_t i, const Vec3& velocity) {
         if (i >= sim.particle_count()) continue;
         const Vec3 position = sim.state().position(i);
         relaunch_particle(sim, i, position, velocity);
-        h.cursors[v].initial_energy[i] = sim.state().initial_energy[i];
+        if (i < h.cursors[v].initial_energy.size()) h.cursors[v].initial_energy[i] = sim.state().initial_energy[i];
         if (v < h.trackers.size()) restart_metrics(h.trackers[v], i, position, velocity, t);
     }
     if (i == 0) h.launch_velocity = velocity;

@@ -1,5 +1,6 @@
 #include "ui/lab_session.hpp"
 
+#include "physics/model/emitter.hpp"
 #include "physics/studies/resource_estimate.hpp"
 #include "ui/panel_state.hpp"
 
@@ -11,7 +12,7 @@ namespace pl::ui {
 std::optional<ParticleSpec> first_particle(const Scene& scene) {
     if (!scene.particles.empty()) return scene.particles.front();
     if (!scene.emitter || scene.emitter->count == 0) return std::nullopt;
-    return initial_particles(scene).front();
+    return emit_particles(*scene.emitter, scene.room, 1).front();
 }
 
 void LabSession::request(const PendingAction& a) {

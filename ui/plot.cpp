@@ -322,6 +322,7 @@ PlotResult EndPlot() {
     result.frame_max = l.widget_max;
     const LegendEntry* over_entry = interact(c, f, entries, l.legend_outside, fit_all, result);
     result.x_min = f.x0, result.x_max = f.x1, result.y_min = f.y0, result.y_max = f.y1;
+    result.area_min = f.min, result.area_max = f.max;
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     const bool on_area = mouse.x >= f.min.x && mouse.x <= f.max.x && mouse.y >= f.min.y && mouse.y <= f.max.y;
     if (result.hovered && on_area && !over_entry && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&

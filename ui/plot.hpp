@@ -61,6 +61,12 @@ struct PlotResult {
     bool clicked = false;
     double click_x = 0.0, click_y = 0.0;
     double x_min = 0.0, x_max = 1.0, y_min = 0.0, y_max = 1.0;
+    ImVec2 area_min, area_max;  // the plot area (inside the axes), screen coordinates
+    // Where the data point (x, y) is drawn (linear plots), screen coordinates.
+    ImVec2 to_screen(double x, double y) const {
+        return {area_min.x + static_cast<float>((x - x_min) / (x_max - x_min)) * (area_max.x - area_min.x),
+                area_max.y - static_cast<float>((y - y_min) / (y_max - y_min)) * (area_max.y - area_min.y)};
+    }
 };
 
 bool BeginPlot(const char* title, const ImVec2& size, int flags = PlotFlags_None);

@@ -172,7 +172,7 @@ struct VariantCursor {
     std::uint64_t observed_steps = 0;   // Simulation::step_count() at the last observation
     std::size_t consumed_events = 0;    // events()[0, consumed) are already recorded
     std::uint64_t dropped_events = 0;   // Simulation::dropped_events() at the last observation
-    std::vector<double> initial_energy; // per particle: a change means it was launched again
+    std::vector<double> initial_energy; // per tracked particle: a change means it was launched again
 };
 
 struct PlotHistory {

@@ -1,10 +1,11 @@
 // Sweep tab: a study over one or two preset fields (or a Monte Carlo sample of one) of the
 // current scene, run in the background by io/sweep_run.hpp, the same code as `particle-lab
-// sweep`; a line plot, a heat map or a histogram of one metric, CSV and PNG export, and a click
-// on a point opens that point's scene.
+// sweep`; a line plot, a heat map or a histogram of one metric, CSV and PNG export. A click on
+// a point pins that point's run beside the live one; Shift+click opens its scene live instead.
 #include "io/preset_io.hpp"
 #include "io/sweep_table.hpp"
 #include "ui/panel_state.hpp"
+#include "ui/pin_scene.hpp"
 #include "ui/plot.hpp"
 #include "ui/sections.hpp"
 
@@ -85,6 +86,20 @@ std::size_t shown_variant(const LabSession& s, const SweepRun& r) {
     return std::min<std::size_t>(static_cast<std::size_t>(std::max(0, s.selected_variant)), n - 1);
 }
 
+// The values that make the point, "launch.elevation_deg=35, drag.model=linear".
+std::string point_text(const SweepRun& r, std::size_t index) {
+    const std::vector<std::string> names = r.spec.plan.column_names(), values = r.spec.plan.point_values(r.prepared.points[index]);
+    std::string what;
+    for (std::size_t c = 0; c < names.size(); ++c) what += (c ? ", " : "") + names[c] + "=" + values[c];
+    return what;
+}
+
+// A click pins the point's run (run for the sweep's duration), to compare with the live run and
+// other points. The live scene and its edits are untouched.
+void pin_point(LabSession& s, const SweepRun& r, std::size_t index) {
+    s.status_message = pin_scene(s, r.prepared.scenes[index], r.spec.duration_s, "sweep point " + point_text(r, index));
+}
+
 // The point's scene becomes the live scene, as an unsaved edit of the scene the sweep ran over
 // (it is that scene with the point's values set). Edits made since the sweep are not dropped.
 void open_point(LabSession& s, const SweepRun& r, std::size_t index) {
@@ -97,10 +112,8 @@ void open_point(LabSession& s, const SweepRun& r, std::size_t index) {
     if (const std::optional<ParticleSpec> p0 = first_particle(scene)) s.launch_velocity = p0->velocity;
     panels_of(s).launch_from_velocity = true;
     s.dirty = true;
-    const std::vector<std::string> names = r.spec.plan.column_names(), values = r.spec.plan.point_values(r.prepared.points[index]);
-    std::string what;
-    for (std::size_t c = 0; c < names.size(); ++c) what += (c ? ", " : "") + names[c] + "=" + values[c];
-    s.status_message = "Opened sweep point " + std::to_string(r.prepared.points[index]) + " (" + what + ") as an unsaved edit; P pins it";
+    s.status_message = "Opened sweep point " + std::to_string(r.prepared.points[index]) + " (" + point_text(r, index) +
+                       ") as an unsaved edit; P pins it";
 }
 
 Rgba heat_color(double t) {  // dark blue to yellow
@@ -163,6 +176,18 @@ std::optional<std::size_t> line_plot(const SweepRun& r, const std::vector<std::o
         for (std::size_t i = 0; i < r.prepared.points.size(); ++i)
             if (r.prepared.points[i] == *best_point) return i;
     return std::nullopt;
+}
+
+// Where the first series' best point is drawn ("sweep.best0"), for the GUI tests to click.
+void note_best_point(LabSession& s, const SweepRun& r, const std::vector<std::optional<double>>& v,
+                     const plot::PlotResult& result) {
+    const std::vector<SweepSeries> series = line_series(r.spec.plan, r.prepared, v);
+    if (series.empty() || result.area_max.x <= result.area_min.x) return;
+    const std::vector<std::optional<double>> y(series[0].y.begin(), series[0].y.end());
+    const auto b = best_index(y);
+    if (!b) return;
+    const ImVec2 at = result.to_screen(series[0].x[*b], series[0].y[*b]);
+    s.widget_rects["sweep.best0"] = {at.x - 1.0f, at.y - 1.0f, 2.0f, 2.0f};
 }
 
 void histogram_plot(const std::vector<std::optional<double>>& v, const char* metric, plot::PlotResult& result) {
@@ -263,7 +288,7 @@ void draw_sweep_tab(LabSession& s) {
     ImGui::SameLine();
     const bool export_png = ImGui::Button("PNG##sweep");
     ImGui::SameLine();
-    ImGui::TextDisabled("%zu points%s; variant %zu; click a point to open its scene", r.prepared.points.size(),
+    ImGui::TextDisabled("%zu points%s; variant %zu; click a point to pin its run, Shift+click to open its scene", r.prepared.points.size(),
                         r.results.cancelled ? " (cancelled: part of them ran)" : "", shown_variant(s, r));
     const auto metric = static_cast<std::size_t>(p.sweep_metric);
     const char* name = sweep_metrics()[metric].name;
@@ -276,9 +301,15 @@ void draw_sweep_tab(LabSession& s) {
     } else {
         const auto xs = numeric_values(plan.axes[0]);
         const auto ys = plan.axes.size() == 2 ? numeric_values(plan.axes[1]) : std::nullopt;
-        clicked = xs && ys ? heat_map(r, v, *xs, *ys, name, result) : line_plot(r, v, name, result);
+        if (xs && ys) {
+            clicked = heat_map(r, v, *xs, *ys, name, result);
+        } else {
+            clicked = line_plot(r, v, name, result);
+            note_best_point(s, r, v, result);
+        }
     }
-    if (clicked) open_point(s, r, *clicked);
+    if (clicked && ImGui::GetIO().KeyShift) open_point(s, r, *clicked);
+    else if (clicked) pin_point(s, r, *clicked);
     if (export_csv || result.export_csv) {
         const SweepHeader header{sweep_id(r.spec), plan.point_count(), Shard{}};
         write_csv(s, export_path(p, "sweep", ".csv"), sweep_csv(header, r.spec, r.prepared, r.results));

@@ -8,10 +8,16 @@
 
 namespace pl {
 
-std::vector<ParticleSpec> emit_particles(const Emitter& e, const Room& room) {
-    SplitMix64 rng(e.seed);
+std::vector<ParticleSpec> emit_particles(const Emitter& e, const Room& room, std::size_t limit) {
     std::vector<ParticleSpec> out;
-    out.reserve(e.count);
+    append_emitted(e, room, out, limit);
+    return out;
+}
+
+void append_emitted(const Emitter& e, const Room& room, std::vector<ParticleSpec>& out, std::size_t limit) {
+    SplitMix64 rng(e.seed);
+    const std::size_t count = std::min(e.count, limit);
+    out.reserve(out.size() + count);
     const Vec3 axis = glm::length(e.direction) > 0 ? e.direction / glm::length(e.direction) : Vec3(0, 1, 0);
     // Orthonormal frame around the axis (Frisvad-style pick of a helper vector).
     const Vec3 helper = std::abs(axis.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
@@ -19,7 +25,7 @@ std::vector<ParticleSpec> emit_particles(const Emitter& e, const Room& room) {
     const Vec3 w = glm::cross(axis, u);
     const double cos_max = std::cos(std::clamp(e.spread_deg, 0.0, 180.0) * std::numbers::pi / 180.0);
     const Vec3 lo = room.min_corner(), hi = room.max_corner();
-    for (std::size_t i = 0; i < e.count; ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
         ParticleSpec p;
         p.radius = rng.uniform(e.radius_min, e.radius_max);
         p.mass = rng.uniform(e.mass_min, e.mass_max);
@@ -38,7 +44,6 @@ std::vector<ParticleSpec> emit_particles(const Emitter& e, const Room& room) {
         p.velocity = rng.uniform(e.speed_min, e.speed_max) * dir;
         out.push_back(p);
     }
-    return out;
 }
 
 }  // namespace pl

@@ -15,6 +15,7 @@ namespace {
 struct MergeCliOptions {
     std::vector<std::string> files;
     std::string out;
+    bool json = false;
 };
 
 int sweep_merge(const MergeCliOptions& o) {
@@ -29,7 +30,7 @@ int sweep_merge(const MergeCliOptions& o) {
         shards.push_back(std::move(*f));
     }
     std::string error;
-    const std::string text = merge_sweep_files(shards, o.files, error);
+    const std::string text = o.json ? merged_sweep_json(shards, o.files, error) : merge_sweep_files(shards, o.files, error);
     if (!error.empty()) {
         print_error("sweep-merge", error);
         return exit_bad_input;
@@ -41,12 +42,13 @@ int sweep_merge(const MergeCliOptions& o) {
 
 void add_sweep_merge_command(CLI::App& app, int& exit_code) {
     auto o = std::make_shared<MergeCliOptions>();
-    CLI::App* cmd = app.add_subcommand("sweep-merge", "join the shard files of one sweep into the whole run's CSV");
+    CLI::App* cmd = app.add_subcommand("sweep-merge", "join the shard files of one sweep into the whole run's CSV or JSON");
     cmd->footer(
-        "The result is byte-identical to the unsharded `particle-lab sweep` output. Every shard of the\n"
-        "sweep must be given once (any order), each complete.");
+        "The result is byte-identical to the unsharded `particle-lab sweep` output (with --json, to\n"
+        "`sweep --json`'s). Every shard of the sweep must be given once (any order), each complete.");
     cmd->add_option("FILES", o->files, "shard CSV files written by sweep --shard I/N")->required();
-    cmd->add_option("--out", o->out, "merged CSV, written atomically (default: stdout)");
+    cmd->add_flag("--json", o->json, "write the JSON document `sweep --json` writes for the whole run");
+    cmd->add_option("--out", o->out, "merged CSV or JSON, written atomically (default: stdout)");
     cmd->callback([o, &exit_code] { exit_code = sweep_merge(*o); });
 }
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A small sweep run whole, then as 3 shards in separate processes under GNU parallel, merged:
-# the merged file is byte-identical to the whole run's. The same with strided shards, and a
+# the merged file is byte-identical to the whole run's, as CSV and as JSON. The same with strided shards, and a
 # Monte Carlo sweep with a fixed seed in 1, 2 and 5 shards gives the same file, hence the same
 # statistics. Skipped (exit 77) when GNU parallel is not installed (./lab installs it).
 set -euo pipefail
@@ -20,6 +20,11 @@ cmp whole.csv merged.csv
 parallel -q --halt now,fail=1 "$bin" sweep "$preset" "${axes[@]}" --shard {}/3 --strided --out strided{}.csv ::: 0 1 2
 "$bin" sweep-merge strided*.csv > merged_strided.csv
 cmp whole.csv merged_strided.csv
+# The merged JSON is the whole run's `sweep --json`, byte for byte (axis values as numbers, a list
+# axis as text, a missing metric as null).
+"$bin" sweep "$preset" "${axes[@]}" --json --out whole.json
+"$bin" sweep-merge --json shard1.csv shard2.csv shard0.csv --out merged.json
+cmp whole.json merged.json
 [ "$(grep -c ',range_at_first_impact_m,' whole.csv)" -eq 22 ]
 
 mc=(--sample "drag.cd=normal(0.47,0.05)" --samples 30 --metrics range_at_first_impact_m --duration 6.5)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The Sweep tab runs a study over the current scene in the background: elevation 10:80:15 (its
 # default) by drag.model none,linear,quadratic,sphere_re is 60 points, and the range at the
-# first impact peaks at 45 degrees without drag (v^2 sin(2 theta) / g), lower with drag.
+# first impact peaks at 45 degrees without drag (v^2 sin(2 theta) / g), lower with drag. A
+# click on a point pins that point's run beside the live one, which stays as it was.
 # Usage: sweep_tab.sh <particle-lab binary> <source dir>
 APP=$1
 SRC=$2
@@ -22,5 +23,12 @@ json_check "$STATE" '{b["series"]: b["x"] for b in d["sweep"]["best"]}["drag.mod
     "without drag the longest range is not at 45 degrees"
 json_check "$STATE" '{b["series"]: b["x"] for b in d["sweep"]["best"]}["drag.model=quadratic"] < 45' \
     "with quadratic drag the longest range is not below 45 degrees"
+# The first series (drag.model=none) peaks at 45 degrees: click that point.
+wait_for_state "$STATE" '"sweep.best0" in d["widgets"]' "the sweep plot does not say where its best point is"
+click_widget "$STATE" sweep.best0
+wait_for_state "$STATE" 'len(d["pinned_runs"]) == 1' "a click on a sweep point did not pin its run"
+json_check "$STATE" '"launch.elevation_deg=45" in d["pinned_runs"][0]["label"] and "drag.model=none" in d["pinned_runs"][0]["label"]' \
+    "the pinned run is not the clicked point (45 degrees, no drag)"
+json_check "$STATE" 'not d["dirty"]' "pinning a sweep point changed the live scene"
 quit_app
 echo "OK"
