@@ -184,6 +184,17 @@ edit_dt() {
     wait_for_state "$STATE" 'd["text_input"]' "a click on the dt field did not put the keyboard in it"
     xdotool key ctrl+a
     xdotool type --delay 4 "$EDITED_DT"
-    hold_key Return
-    wait_for_state "$STATE" "d['dirty'] and d['scene_dt'] == $EDITED_DT and not d['text_input']" "editing dt did not apply"
+    # Enter again if a frame slower than hold_key's 0.12 s missed it (a loaded machine); once
+    # applied, the keyboard has left the field and another Enter does nothing.
+    local applied="d['dirty'] and d['scene_dt'] == $EDITED_DT and not d['text_input']"
+    for _ in 1 2; do
+        hold_key Return
+        for _ in $(seq 40); do
+            dump_now "$STATE"
+            "$PYTHON" -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' \
+                "$STATE" "$applied" && return 0
+            sleep 0.05
+        done
+    done
+    wait_for_state "$STATE" "$applied" "editing dt did not apply"
 }
