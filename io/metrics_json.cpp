@@ -12,21 +12,30 @@ Json json_document() {
 
 Json optional_json(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
 
+// The keys are the quantity names (physics/model/expectation.hpp), in their order, with the wall
+// of the first impact after the time of flight; counts stay integers.
 Json particle_metrics_json(const ParticleMetrics& p) {
     Json j;
-    j["time_of_flight_s"] = optional_json(p.first_impact_time);
-    j["first_impact_wall"] = p.first_impact_wall >= 0 ? Json(wall_name(p.first_impact_wall)) : Json(nullptr);
-    j["range_at_first_impact_m"] = optional_json(p.range_at_first_impact);
-    j["apex_height_m"] = p.apex_height;
-    j["apex_time_s"] = p.apex_time;
-    j["final_range_m"] = p.final_range;
-    j["bounces"] = p.bounces;
-    j["time_to_rest_s"] = optional_json(p.time_to_rest);
-    j["lost_to_drag_J"] = p.lost_drag;
-    j["lost_to_bounces_J"] = p.lost_bounce;
-    j["lost_to_friction_J"] = p.lost_friction;
-    j["wind_work_J"] = p.wind_work;
+    for (const QuantityInfo& q : quantity_table) {
+        if (q.quantity == Quantity::bounces) j[q.name] = p.bounces;
+        else j[q.name] = optional_json(metric_value(p, q.quantity));
+        if (q.quantity == Quantity::time_of_flight_s)
+            j["first_impact_wall"] = p.first_impact_wall >= 0 ? Json(wall_name(p.first_impact_wall)) : Json(nullptr);
+    }
     return j;
+}
+
+Json expectations_json(const std::vector<ExpectationResult>& results) {
+    Json list = Json::array();
+    for (const ExpectationResult& r : results)
+        list.push_back({{"quantity", to_string(r.expected.quantity)},
+                        {"variant", r.expected.variant},
+                        {"particle", r.expected.particle},
+                        {"expected", r.expected.value},
+                        {"tolerance", r.expected.tolerance},
+                        {"measured", optional_json(r.measured)},
+                        {"met", r.met}});
+    return list;
 }
 
 }  // namespace pl::cli

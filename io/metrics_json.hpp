@@ -2,6 +2,7 @@
 // --json` (the GUI's state dump uses the same, so a test can hold the two side by side).
 #pragma once
 
+#include "physics/studies/expectations.hpp"
 #include "physics/studies/metrics.hpp"
 
 #include <nlohmann/json.hpp>
@@ -17,5 +18,8 @@ nlohmann::ordered_json json_document();  // {"schema_version": json_schema_versi
 
 nlohmann::ordered_json optional_json(const std::optional<double>& v);
 nlohmann::ordered_json particle_metrics_json(const ParticleMetrics& p);
+// A preset's expectations beside the measured values: quantity, variant, particle, expected,
+// tolerance, measured (null: no value), met.
+nlohmann::ordered_json expectations_json(const std::vector<ExpectationResult>& results);
 
 }  // namespace pl::cli

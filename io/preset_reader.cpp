@@ -134,11 +134,13 @@ private:
     void checked(const SectionRead& r, const std::string& path, const Room& room);
     void checked(const SectionRead& r, const std::string& path, const ParticleSpec& s);
     void checked(const SectionRead& r, const std::string& path, const Emitter& e);
+    void checked(const SectionRead& r, const std::string& path, const Expectation& e);
     void ordered(bool both_ok, double low, double high, const std::string& high_path, const std::string& low_name);
 
     void variants(const PresetJson& j, const std::string& path, Scene& scene);
     void particle_count(const SectionRead& r, const Scene& scene);
     void check_fits(const Room& room, const Scene& scene);
+    void check_expectations(const Scene& scene);
 
     const Scene* scene_ = nullptr;
     const PresetJson* variant_list_ = nullptr;
@@ -146,6 +148,7 @@ private:
     bool emitter_radius_ok_ = false;
     bool emitter_count_ok_ = false;
     std::vector<PendingFit> pending_fits_;
+    std::vector<std::pair<std::string, Expectation>> pending_expectations_;  // indices checked at the end
 };
 
 // Visits an object's keys in document order; unknown keys are errors, missing required ones too.
@@ -211,6 +214,25 @@ void Reader::checked(const SectionRead& r, const std::string&, const Room&) {
 void Reader::checked(const SectionRead& r, const std::string& path, const ParticleSpec& s) {
     if (r.is_object && r.ok(KeyTable<ParticleSpec>::at("position")) && r.fine(KeyTable<ParticleSpec>::at("radius")))
         pending_fits_.push_back({path, s.position, s.radius});
+}
+
+void Reader::checked(const SectionRead& r, const std::string& path, const Expectation& e) {
+    if (r.is_object && r.fine(KeyTable<Expectation>::at("particle")) && r.fine(KeyTable<Expectation>::at("variant")))
+        pending_expectations_.emplace_back(path, e);
+}
+
+// An expectation names a particle and a variant the scene has.
+void Reader::check_expectations(const Scene& scene) {
+    const std::size_t particles = scene.particles.size() + (scene.emitter ? scene.emitter->count : 0);
+    const std::size_t variants = std::max<std::size_t>(1, scene.variants.size());
+    for (const auto& [path, e] : pending_expectations_) {
+        if (e.particle >= particles)
+            fail(json_path_key(path, "particle"),
+                 fmt::format("is {}, but the scene has {} particle{} (indices from 0)", e.particle, particles, particles == 1 ? "" : "s"));
+        if (e.variant >= variants)
+            fail(json_path_key(path, "variant"),
+                 fmt::format("is {}, but the scene has {} variant{} (indices from 0)", e.variant, variants, variants == 1 ? "" : "s"));
+    }
 }
 
 void Reader::ordered(bool both_ok, double low, double high, const std::string& high_path, const std::string& low_name) {
@@ -298,6 +320,7 @@ void Reader::document(const PresetJson& doc, Scene& scene) {
     if (variant_list_) variants(*variant_list_, "variants", scene);
     particle_count(r, scene);
     if (room_ok_) check_fits(scene.room, scene);
+    check_expectations(scene);
 }
 
 }  // namespace

@@ -131,7 +131,8 @@ std::string preset_format_reference() {
         "particle (from `particles`, `emitter`, or both; at most {} in all); every particle fits\n"
         "inside the room (radius < half its smallest size, centre a radius away from every wall);\n"
         "emitter region_min <= region_max per axis, speed_min <= speed_max, mass_min <= mass_max,\n"
-        "radius_min <= radius_max; variant labels unique; a variant's section starts from the scene's\n"
+        "radius_min <= radius_max; variant labels unique; an expectation's particle and variant exist; a\n"
+        "variant's section starts from the scene's\n"
         "own, so a variant need only name what differs. Unknown keys, duplicate keys, wrong types,\n"
         "non-finite numbers (1e400 overflows to infinity) and out-of-range values are errors; every\n"
         "one is reported with its JSON path. Saved files list every field, defaults included.\n",

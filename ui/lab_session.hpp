@@ -54,6 +54,13 @@ struct PendingAction {
     std::filesystem::path file;  // open, revert: the preset to load
 };
 
+// A point the measuring tool picked in the 3D view: a trail sample or a ball where it is now.
+struct MeasuredPoint {
+    Vec3 position{0.0, 0.0, 0.0};
+    double t = 0.0;  // simulated time of the sample, s
+    std::size_t variant = 0, particle = 0;
+};
+
 // Particle 0 of a scene as it starts (the explicit list's first, else the emitter's); none
 // without particles.
 std::optional<ParticleSpec> first_particle(const Scene& scene);
@@ -87,6 +94,8 @@ struct LabSession {
     bool show_wind = false;                    // wind field arrows on a grid
     bool split_view = false;                   // one viewport per variant (up to 9) instead of overlaid
     std::vector<int> split_variants;           // the variants the split view shows (empty: the first 9)
+    bool measuring = false;                    // M: clicks in the view pick points to measure between
+    std::vector<MeasuredPoint> measure_points; // 0, 1 or 2; a third click starts again; Esc clears
     // Popups the shell toggles from keys and window events; draw_popups shows them.
     bool show_help = false;                    // F1/H toggle, Esc closes
     std::optional<PendingAction> pending;      // asked about: unsaved edits would be lost (Save / Discard / Cancel)

@@ -230,6 +230,8 @@ void help_overlay(LabSession& s) {
         {"R", "reset to the preset's initial state"},
         {"L", "launch particle 0 again with the Launch panel's velocity"},
         {"P", "pin this run: it stays beside the live run (plots, 3D view, Compare tab)"},
+        {"M", "measuring tool: click two points (a ball or a trail sample) to read the distance\n"
+              "and the time between them; Esc clears"},
         {"W A S D", "move the camera forward / left / back / right"},
         {"Q E", "move the camera down / up"},
         {"left drag", "orbit the camera around the room"},
@@ -244,8 +246,9 @@ void help_overlay(LabSession& s) {
         {"F", "focus the selected particle"},
         {"F9", "start / stop recording a video (file, format, area: the REC button)"},
         {"F1 or H", "this help"},
-        {"Esc", "close dialogs, cancel an aim"},
-        {"Ctrl+S", "save the preset over its file (previous kept as .bak)"},
+        {"Esc", "close dialogs, cancel an aim, clear a measurement"},
+        {"Ctrl+S", "save the preset over its file (previous kept as .bak); a shipped preset is\n"
+                   "read-only: Ctrl+S saves a copy into your presets folder (a file dialog asks the name)"},
         {"Ctrl+O", "type a preset's path, Enter opens it"},
         {"Ctrl+Q", "quit (asks if there are unsaved changes)"},
         {"plots: drag", "scroll back in time (stops following)"},
@@ -272,6 +275,8 @@ void help_overlay(LabSession& s) {
 void draw_popups(LabSession& s) {
     help_overlay(s);
     draw_unsaved_prompt(s);
+    draw_file_dialogs(s);
+    draw_export_question(s);
     error_modal(s);
 }
 

@@ -25,7 +25,8 @@ void draw_analysis_panel(LabSession&);  // bottom tabs: compare, events, ledger,
 void draw_status_bar(LabSession&);      // one line
 void draw_popups(LabSession&);
 // Saves the scene over the preset it came from (atomic, previous file kept as .bak); on failure
-// the error popup says why and nothing is lost. Ctrl+S.
+// the error popup says why and nothing is lost. A shipped preset (read-only) or a scene without
+// a file opens the Save As dialog instead (false: not saved yet). Ctrl+S.
 bool save_in_place(LabSession&);          // error modal, help overlay, unsaved-changes prompt
 // Ctrl+O: opens the Preset section and puts the keyboard in its "open" path field (type a
 // path, Enter loads it; a file that does not load shows the error and keeps the scene).

@@ -9,13 +9,16 @@
 #include "physics/studies/stability_study.hpp"
 #include "ui/background_job.hpp"
 #include "ui/field_edit.hpp"
+#include "ui/file_dialog.hpp"
 #include "ui/lab_session.hpp"
 #include "ui/plot.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace pl::ui {
@@ -31,6 +34,12 @@ struct PendingPicture {
     int frames_left = -1;  // < 0: none
     std::filesystem::path path;
     ImVec2 min, max;
+};
+
+// Exports held back because their file exists, until the user answers Overwrite / Cancel.
+struct PendingExports {
+    std::vector<std::pair<std::filesystem::path, std::string>> csv;  // file, text
+    std::optional<PendingPicture> picture;
 };
 
 struct StabilitySettings {
@@ -59,8 +68,10 @@ struct PanelState {
     std::set<std::string> hidden_series;
     bool show_event_markers = true;
     int plots_tab = 0;
-    std::string export_stem = "particle-lab";  // files go to <cwd>/<stem>-<plot>.csv/.png
+    std::string export_stem = "particle-lab";  // files go to <export_dir>/<stem>-<plot>.csv/.png
+    std::filesystem::path export_dir;          // chosen in the file dialog; empty: the working directory
     PendingPicture picture;
+    PendingExports export_question;  // ui/export_question.cpp
 
     // ---- control panel
     FieldEdits fields;
@@ -68,7 +79,8 @@ struct PanelState {
     std::vector<PresetEntry> presets;
     bool presets_scanned = false;
     int preset_choice = -1;
-    std::string save_as_name;
+    FileDialog file_dialog;                  // one at a time: open, save as, export folder
+    std::optional<PendingAction> after_save; // "Save and quit" on a shipped preset: quit once saved
     std::string open_path;
     bool focus_open_path = false;      // Ctrl+O: the next frame puts the keyboard in the open-path field
     double launch_speed = 0.0, launch_elevation_deg = 0.0, launch_azimuth_deg = 0.0;

@@ -180,7 +180,7 @@ void handle_result(LabSession& s, const plot::PlotResult& r, const std::string& 
     if (r.export_png) ask_picture(s, export_path(p, name, ".png"), r.frame_min, r.frame_max);
 }
 
-void toolbar(PanelState& p, bool& export_csv, bool& export_png) {
+void toolbar(LabSession& s, PanelState& p, bool& export_csv, bool& export_png) {
     plot::TimeAxisLink& axis = p.time_axis;
     // No tooltips while a picture is pending: the mouse is still on the button that asked.
     const bool quiet = p.picture.frames_left >= 0;
@@ -208,7 +208,11 @@ void toolbar(PanelState& p, bool& export_csv, bool& export_png) {
     tip("Export the visible data of these plots to " + export_path(p, "<plot>", ".csv").string());
     ImGui::SameLine();
     export_png = ImGui::SmallButton("PNG");
+    ui::note_item_rect(s, "plots.png");
     tip("Save a picture of the plots to " + export_path(p, "plots", ".png").string());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("to...")) begin_choose_export_folder(s);
+    tip("Choose the folder exports go to (now " + export_path(p, "", "").parent_path().string() + ")");
 }
 
 void motion_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool export_csv) {
@@ -286,23 +290,8 @@ void ledger_plots(LabSession& s, PanelState& p, const PlotHistory& h, bool expor
 }  // namespace
 
 std::filesystem::path export_path(const PanelState& p, const std::string& plot, const char* extension) {
-    return std::filesystem::absolute(p.export_stem + "-" + plot + extension);
-}
-
-void write_csv(LabSession& s, const std::filesystem::path& file, const std::string& csv) {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << csv;
-    out.close();
-    if (!out) {
-        s.error_popup = "Could not write " + file.string() + " (is the folder writable?)";
-        return;
-    }
-    s.status_message = "Wrote " + file.string();
-}
-
-void ask_picture(LabSession& s, const std::filesystem::path& file, ImVec2 min, ImVec2 max) {
-    PanelState& p = panels_of(s);
-    p.picture = {2, file, min, max};
+    const std::string name = p.export_stem + "-" + plot + extension;
+    return std::filesystem::absolute(p.export_dir.empty() ? std::filesystem::path(name) : p.export_dir / name);
 }
 
 void draw_plots_panel(LabSession& s) {
@@ -311,7 +300,7 @@ void draw_plots_panel(LabSession& s) {
     const PlotHistory& h = history_of(s);
     pending_picture(s);
     bool export_csv = false, export_png = false;
-    toolbar(p, export_csv, export_png);
+    toolbar(s, p, export_csv, export_png);
     const ImVec2 region_min = ImGui::GetCursorScreenPos();
     if (ImGui::BeginTabBar("##plot_tabs")) {
         if (ImGui::BeginTabItem("Height, speed, energy")) {
@@ -326,7 +315,7 @@ void draw_plots_panel(LabSession& s) {
         }
         ImGui::EndTabBar();
     }
-    if (export_csv) {
+    if (export_csv && !export_question_open(s)) {
         // handle_result wrote one file per plot; name them all in the status line.
         s.status_message = "Wrote " + export_path(p, p.plots_tab == 0 ? "{height,speed,kinetic}" : "{ledger,residual}", ".csv").string();
     }

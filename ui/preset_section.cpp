@@ -7,8 +7,6 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cstdlib>
 #include <system_error>
 
 namespace pl::ui {
@@ -29,7 +27,7 @@ void scan_folder(const std::filesystem::path& dir, bool shipped, std::vector<Pre
 void rescan(LabSession& s, PanelState& p) {
     p.presets.clear();
     // Without the shipped folder, the folder of the preset that opened is the next best thing.
-    scan_folder(!s.preset_dir.empty() ? s.preset_dir : s.preset_path.parent_path(), true, p.presets);
+    scan_folder(!s.preset_dir.empty() ? s.preset_dir : s.preset_path.parent_path(), !s.preset_dir.empty(), p.presets);
     scan_folder(user_preset_dir(), false, p.presets);
     p.presets_scanned = true;
     p.preset_choice = -1;
@@ -40,47 +38,9 @@ void rescan(LabSession& s, PanelState& p) {
     }
 }
 
-// A name for "save as": letters, digits, '-', '_', '.', space; no path separators.
-std::string bad_name_reason(const std::string& name) {
-    if (name.empty()) return "type a name first";
-    if (name.size() > 100) return "name: at most 100 characters";
-    if (name == "." || name == "..") return "name: not a file name";
-    for (char c : name)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' || c == ' '))
-            return std::string("name: only letters, digits, space, '-', '_' and '.' (found '") + c + "')";
-    return {};
-}
-
 }  // namespace
 
-std::filesystem::path user_preset_dir() {
-    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "particle-lab" / "presets";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / ".config" / "particle-lab" / "presets";
-    return {};
-}
-
-bool save_scene_to(LabSession& s, const std::filesystem::path& file) {
-    const SaveResult r = save_preset(file, s.scene);
-    if (!r.ok) {
-        s.error_popup = "Could not save " + file.string() + ":\n" + r.error + "\nNothing was lost: the scene is still open.";
-        return false;
-    }
-    s.preset_path = file;
-    s.dirty = false;
-    s.status_message = "Saved " + file.string();
-    return true;
-}
-
 void focus_open_path(LabSession& s) { panels_of(s).focus_open_path = true; }
-
-bool save_in_place(LabSession& s) {
-    if (s.preset_path.empty()) {
-        s.status_message = "Not saved: this scene has no file yet; use Save as";
-        return false;
-    }
-    return save_scene_to(s, s.preset_path);
-}
 
 void draw_preset_section(LabSession& s) {
     PanelState& p = panels_of(s);
@@ -96,6 +56,7 @@ void draw_preset_section(LabSession& s) {
         bool user_header = false;
         for (std::size_t i = 0; i < p.presets.size(); ++i) {
             const PresetEntry& e = p.presets[i];
+            if (i == 0 && e.shipped) ImGui::TextDisabled("shipped (read-only)");
             if (!e.shipped && !user_header) {
                 ImGui::TextDisabled("your presets");
                 user_header = true;
@@ -118,34 +79,25 @@ void draw_preset_section(LabSession& s) {
     note_item_rect(s, "preset.load");
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::BeginDisabled(s.preset_path.empty());
-    if (ImGui::Button("Save")) save_scene_to(s, s.preset_path);
+    // Save on a shipped preset (read-only) or a scene without a file asks where, as Save as does.
+    if (ImGui::Button("Save")) save_in_place(s);
+    note_item_rect(s, "preset.save");
+    if (ImGui::IsItemHovered() && is_shipped_preset(s, s.preset_path))
+        ImGui::SetTooltip("Shipped presets are read-only: Save writes a copy into %s", user_preset_dir().string().c_str());
     ImGui::SameLine();
+    if (ImGui::Button("Save as...")) begin_save_as(s, std::nullopt);
+    note_item_rect(s, "preset.save_as");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(s.preset_path.empty());
     if (ImGui::Button("Revert")) s.request({PendingAction::Kind::revert, s.preset_path});
     note_item_rect(s, "preset.revert");
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Rescan")) rescan(s, p);
-
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Save as").x - ImGui::GetStyle().ItemSpacing.x - ImGui::GetStyle().FramePadding.x * 2);
-    ImGui::InputTextWithHint("##save_as", "name for your copy", &p.save_as_name);
+    if (ImGui::Button("Open...")) begin_open(s);
+    note_item_rect(s, "preset.open_dialog");
     ImGui::SameLine();
-    const std::string reason = bad_name_reason(p.save_as_name);
-    if (ImGui::Button("Save as")) {
-        if (!reason.empty()) {
-            s.error_popup = "Save as: " + reason;
-        } else {
-            std::error_code ec;
-            const std::filesystem::path dir = user_preset_dir();
-            if (dir.empty()) s.error_popup = "Save as: no home folder to keep your presets in (HOME is not set)";
-            else if (std::filesystem::create_directories(dir, ec); ec)
-                s.error_popup = "Save as: cannot create " + dir.string() + ": " + ec.message();
-            else if (save_scene_to(s, dir / (p.save_as_name + ".json")))
-                rescan(s, p);
-        }
-    }
-    if (!p.save_as_name.empty() && !reason.empty()) ImGui::TextColored({1.0f, 0.42f, 0.42f, 1.0f}, "%s", reason.c_str());
-    ImGui::TextDisabled("saves to %s", user_preset_dir().string().c_str());
+    ImGui::TextDisabled("your presets: %s", user_preset_dir().string().c_str());
 
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - ImGui::GetStyle().ItemSpacing.x - ImGui::GetStyle().FramePadding.x * 2);
     if (p.focus_open_path) {

@@ -1,5 +1,6 @@
-// The experiment's own panels: what the preset is about (its description in full) and the
-// pinned runs kept beside the live one.
+// The experiment's own panels: what the preset is about (its description in full, its expected
+// values beside the measured ones) and the pinned runs kept beside the live one.
+#include "ui/expectations_view.hpp"
 #include "ui/pinned_runs.hpp"
 #include "ui/sections.hpp"
 
@@ -12,11 +13,13 @@ namespace pl::ui {
 void draw_about_section(LabSession& s) {
     if (s.scene.description.empty()) {
         ImGui::TextDisabled("This preset has no description.");
+        draw_expectations(s);
         return;
     }
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(s.scene.description.c_str());
     ImGui::PopTextWrapPos();
+    draw_expectations(s);
 }
 
 void draw_runs_section(LabSession& s) {

@@ -42,11 +42,15 @@ std::size_t note_count(const LabSession& s);     // the others: out of range wit
 void note_item_rect(LabSession& s, const std::string& name);
 // Saves the scene to `file`; false (and an error dialog) when it cannot.
 bool save_scene_to(LabSession& s, const std::filesystem::path& file);
-// Plot exports: <cwd>/<export stem>-<plot><extension>; CSV text written there (status line or
+// Plot exports: <export folder (default: cwd)>/<export stem>-<plot><extension>; CSV text written there (status line or
 // error dialog); a picture of [min, max] taken two frames later (the menu that asked is gone).
 std::filesystem::path export_path(const PanelState& p, const std::string& plot, const char* extension);
+// A file that exists already is not written until the user answers "Overwrite?" (Overwrite /
+// Cancel: draw_export_question, ui/export_question.cpp).
 void write_csv(LabSession& s, const std::filesystem::path& file, const std::string& csv);
 void ask_picture(LabSession& s, const std::filesystem::path& file, ImVec2 min, ImVec2 max);
+bool export_question_open(const LabSession& s);
+void draw_export_question(LabSession& s);
 void draw_sweep_tab(LabSession& s);
 // The Sweep tab's last result for the state dump: points, points run, and per line series its
 // label and the first axis's value at the series' largest metric value.
@@ -56,7 +60,19 @@ struct SweepSummary {
     bool running = false;
 };
 SweepSummary sweep_summary(const LabSession& s);
-// The user's own presets: $XDG_CONFIG_HOME/particle-lab/presets or ~/.config/particle-lab/presets.
+// Preset files (ui/preset_files.cpp). The user's own presets: $XDG_DATA_HOME/particle-lab/presets,
+// default ~/.local/share/particle-lab/presets.
 std::filesystem::path user_preset_dir();
+// Whether `file` is one of the shipped presets (in s.preset_dir), which are never written.
+bool is_shipped_preset(const LabSession& s, const std::filesystem::path& file);
+// The file dialog, to save a copy (then `then`, e.g. the quit that asked to save first), to open
+// a preset, or to choose the folder plot exports go to. draw_file_dialogs shows it and acts.
+void begin_save_as(LabSession& s, std::optional<PendingAction> then);
+void begin_open(LabSession& s);
+void begin_choose_export_folder(LabSession& s);
+// Saves before `then` ("Save and quit"): in place, or for a shipped preset or a scene without a
+// file through Save As, which performs `then` once saved. True when saved in place.
+bool save_then(LabSession& s, const PendingAction& then);
+void draw_file_dialogs(LabSession& s);
 
 }  // namespace pl::ui

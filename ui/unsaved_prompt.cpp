@@ -49,14 +49,13 @@ void draw_unsaved_prompt(LabSession& s) {
     ImGui::TextDisabled("%s", s.preset_path.empty() ? "The scene was never saved." : ("Saved to: " + s.preset_path.string()).c_str());
     ImGui::Separator();
     if (w.save) {
-        ImGui::BeginDisabled(s.preset_path.empty());
-        // A failed save drops the question: the edit stays, and the error dialog says why.
+        // A failed save drops the question: the edit stays, and the error dialog says why. A
+        // shipped preset or a scene without a file asks where first (Save As), then goes ahead.
         if (ImGui::Button(w.save)) {
-            if (save_scene_to(s, s.preset_path)) s.perform(action);
+            if (save_then(s, action)) s.perform(action);
             else s.pending.reset();
         }
         note_item_rect(s, "unsaved.save");
-        ImGui::EndDisabled();
         ImGui::SameLine();
     }
     if (ImGui::Button(w.discard)) s.perform(action);

@@ -3,6 +3,8 @@
 // SI units throughout, y is up.
 #pragma once
 
+#include "physics/model/expectation.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -125,6 +127,7 @@ struct Scene {
     std::vector<ParticleSpec> particles;
     std::optional<Emitter> emitter;
     std::vector<Variant> variants;  // empty: the scene itself is the only variant
+    std::vector<Expectation> expect;  // quantities worth watching, with their expected values
 };
 
 // The constant description one simulation runs: a scene with one variant applied.

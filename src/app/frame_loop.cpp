@@ -15,6 +15,7 @@
 #include "app/shell_windows.hpp"
 #include "app/shortcuts.hpp"
 #include "app/signals.hpp"
+#include "app/measure_tool.hpp"
 #include "app/state_dump.hpp"
 #include "app/trail_history.hpp"
 #include "app/view_input.hpp"
@@ -266,7 +267,9 @@ void FrameLoop::draw(const ShellLayout& layout, const FramebufferMapping& fb, in
     const std::vector<ViewPane> panes = view_panes(layout.view, session.split_view, variant_count,
                                                    split_variants(session.split_variants, variant_count));
     const std::optional<HoveredParticle> hovered = handle_view_mouse(drag_, view_.camera, panes, session);
+    if (drag_.clicked && session.measuring) measure_click(session, trails_, panes, view_.camera, drag_.press_x, drag_.press_y);
     draw_view_overlay(session, panes, view_.camera, hovered);
+    draw_measure_overlay(session, panes, view_.camera);
     draw_launch_aim(drag_.aim, session, panes, view_.camera);
     if (hovered) show_particle_tooltip(session, hovered->particle);
     ui::draw_popups(session);

@@ -4,12 +4,19 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
+#include <vector>
 
 namespace pl::app {
 
 namespace {
 
-const glm::vec4 floor_color(0.19f, 0.21f, 0.25f, 0.80f);
+// The floor is lit as if by a lamp over the room's centre: lighter in the middle, darker towards
+// the walls (the colour is interpolated across a grid of quads), so the floor reads as a surface
+// under the grid and the balls' shadows and drop lines stand out against it.
+const glm::vec4 floor_centre_color(0.30f, 0.33f, 0.39f, 0.92f);
+const glm::vec4 floor_edge_color(0.13f, 0.145f, 0.175f, 0.92f);
+constexpr int floor_cells = 24;  // quads per side
 const glm::vec4 wall_color(0.20f, 0.225f, 0.27f, 0.55f);
 const glm::vec4 grid_major_color(0.62f, 0.68f, 0.78f, 0.30f);
 const glm::vec4 grid_minor_color(0.62f, 0.68f, 0.78f, 0.10f);
@@ -40,6 +47,27 @@ struct SurfaceVertex {
     glm::vec3 position;
     glm::vec4 color;
 };
+
+// Shade at a floor point: 1 - r^2 falloff with r the distance from the centre over the half
+// diagonal (0 at the centre, 1 in the corners).
+glm::vec4 floor_color_at(glm::vec3 p, glm::vec3 lo, glm::vec3 hi) {
+    const glm::vec2 half(0.5f * (hi.x - lo.x), 0.5f * (hi.z - lo.z));
+    const glm::vec2 d(p.x - 0.5f * (lo.x + hi.x), p.z - 0.5f * (lo.z + hi.z));
+    const float r2 = glm::dot(d, d) / std::max(glm::dot(half, half), 1e-12f);
+    return glm::mix(floor_centre_color, floor_edge_color, std::clamp(r2, 0.0f, 1.0f));
+}
+
+// The floor as floor_cells^2 quads, facing up (counter-clockwise seen from above).
+void add_floor(glm::vec3 lo, glm::vec3 hi, std::vector<SurfaceVertex>& out) {
+    auto at = [&](int i, int k) {
+        const glm::vec3 p(lo.x + (hi.x - lo.x) * static_cast<float>(i) / floor_cells, lo.y,
+                          lo.z + (hi.z - lo.z) * static_cast<float>(k) / floor_cells);
+        return SurfaceVertex{p, floor_color_at(p, lo, hi)};
+    };
+    for (int i = 0; i < floor_cells; ++i)
+        for (int k = 0; k < floor_cells; ++k)
+            for (const auto& [di, dk] : {std::pair{0, 0}, {0, 1}, {1, 1}, {0, 0}, {1, 1}, {1, 0}}) out.push_back(at(i + di, k + dk));
+}
 
 }  // namespace
 
@@ -77,10 +105,10 @@ void RoomRenderer::draw_walls(const Room& room, const CameraMatrices& camera) {
         {4, 5, 7, 6},  // z max
     }};
     std::vector<SurfaceVertex> vertices;
+    add_floor(lo, hi, vertices);
     for (std::size_t f = 0; f < faces.size(); ++f) {
-        const bool is_floor = f == 2;
+        if (f == 2) continue;  // the floor: add_floor
         auto color_at = [&](glm::vec3 p) {
-            if (is_floor) return floor_color;
             const float up = (p.y - lo.y) / std::max(hi.y - lo.y, 1e-6f);
             glm::vec4 c = wall_color;
             c.a *= 1.0f - 0.6f * up;

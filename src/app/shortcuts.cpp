@@ -13,6 +13,7 @@ void close_popups(ui::LabSession& s) {
     s.show_help = false;
     s.pending.reset();
     s.error_popup.clear();
+    s.measure_points.clear();
 }
 
 }  // namespace
@@ -47,6 +48,10 @@ ViewCommand apply_shortcuts(const std::vector<KeyPress>& keys, bool text_input_a
             case GLFW_KEY_N: s.requests.single_step = true; break;
             case GLFW_KEY_L: s.requests.relaunch = true; break;
             case GLFW_KEY_P: s.status_message = ui::pin_current_run(s); break;
+            case GLFW_KEY_M:
+                s.measuring = !s.measuring;
+                s.measure_points.clear();
+                break;
             case GLFW_KEY_F1:
             case GLFW_KEY_H: s.show_help = !s.show_help; break;
             case GLFW_KEY_F: view.focus_selected = true; break;

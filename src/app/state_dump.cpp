@@ -2,6 +2,8 @@
 
 #include "app/picking.hpp"
 #include "io/metrics_json.hpp"
+#include "ui/expectations_view.hpp"
+#include "ui/panel_state.hpp"
 #include "ui/pinned_runs.hpp"
 #include "ui/plot_history.hpp"
 #include "ui/sections.hpp"
@@ -119,6 +121,33 @@ nlohmann::json record_json(const RecordControl* rec) {
             {"error", rec->error}};
 }
 
+// The measuring tool: on or off, its points (with where they appear in the first pane showing
+// their variant), and with two points the distance and time between them.
+nlohmann::json measure_json(const ui::LabSession& s, const ViewSnapshot& view) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const ui::MeasuredPoint& p : s.measure_points)
+        points.push_back({{"position", vec3(p.position)}, {"t", p.t}, {"variant", p.variant}, {"particle", p.particle},
+                          {"screen", screen_position(view, p.variant, p.position)}});
+    nlohmann::json j = {{"active", s.measuring}, {"points", points}, {"distance_m", nullptr}, {"time_s", nullptr}};
+    if (s.measure_points.size() == 2) {
+        j["distance_m"] = glm::length(s.measure_points[1].position - s.measure_points[0].position);
+        j["time_s"] = std::abs(s.measure_points[1].t - s.measure_points[0].t);
+    }
+    return j;
+}
+
+// The file dialog while it shows (null otherwise): mode, folder, filename, the overwrite question.
+nlohmann::json file_dialog_json(const ui::LabSession& s) {
+    if (!s.panels || !s.panels->file_dialog.visible) return nullptr;
+    const ui::FileDialog& d = s.panels->file_dialog;
+    static constexpr const char* modes[] = {"open", "save", "folder"};
+    return {{"mode", modes[static_cast<int>(d.mode)]},
+            {"dir", d.dir.string()},
+            {"filename", d.filename},
+            {"overwrite", d.overwrite ? nlohmann::json(d.overwrite->string()) : nlohmann::json(nullptr)},
+            {"error", d.error}};
+}
+
 }  // namespace
 
 std::string write_state_dump(const std::filesystem::path& file, const ui::LabSession& s, long frames,
@@ -189,6 +218,11 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
                         {"render_ms", s.frame.render_ms},
                         {"substeps", s.frame.substeps},
                         {"behind", s.frame.behind}};
+    j["file_dialog"] = file_dialog_json(s);
+    j["export_question"] = ui::export_question_open(s);
+    j["measure"] = measure_json(s, view);
+    // The preset's expectations beside the live measurements, as `compare --json` lists them.
+    j["expectations"] = cli::expectations_json(ui::live_expectations(s));
     // The Sweep tab's last result: points, points run, and per series the first axis's value
     // where the shown metric is largest.
     const ui::SweepSummary sweep = ui::sweep_summary(s);

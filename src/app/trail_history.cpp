@@ -23,6 +23,7 @@ Trail& TrailHistory::trail_for(std::size_t variant, std::size_t particle) {
     t.variant = variant;
     t.particle = particle;
     t.points.resize(capacity);
+    t.times.resize(capacity);
     trails_.push_back(std::move(t));
     return trails_.back();
 }
@@ -46,6 +47,7 @@ void TrailHistory::sample(const Experiment& e, std::size_t selected_particle, st
         auto record = [&](std::size_t i) {
             Trail& trail = trail_for(v, i);
             trail.points[trail.head] = glm::vec3(s.position(i));
+            trail.times[trail.head] = t;
             trail.head = (trail.head + 1) % capacity;
             trail.count = std::min(trail.count + 1, capacity);
         };

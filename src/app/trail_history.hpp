@@ -15,10 +15,13 @@ namespace pl::app {
 struct Trail {
     std::size_t variant = 0, particle = 0;
     std::vector<glm::vec3> points;  // ring buffer
+    std::vector<double> times;      // simulated time of each point, s (same ring)
     std::size_t head = 0;           // next slot to write
     std::size_t count = 0;          // valid samples
     // Oldest first: k = 0 .. count-1.
-    const glm::vec3& at(std::size_t k) const { return points[(head + points.size() - count + k) % points.size()]; }
+    const glm::vec3& at(std::size_t k) const { return points[slot(k)]; }
+    double time_at(std::size_t k) const { return times[slot(k)]; }
+    std::size_t slot(std::size_t k) const { return (head + points.size() - count + k) % points.size(); }
 };
 
 class TrailHistory {

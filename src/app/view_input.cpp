@@ -43,6 +43,7 @@ std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& ca
             }
     }
     bool clicked = false;
+    drag.clicked = false;
     if (drag.button >= 0) {
         if (std::hypot(mx - drag.press_x, my - drag.press_y) > click_tolerance_px) drag.moved = true;
         const ImVec2 d = io.MouseDelta;
@@ -60,6 +61,7 @@ std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& ca
         }
         if (!ImGui::IsMouseDown(drag.button)) {
             clicked = !drag.moved && drag.button == ImGuiMouseButton_Left;
+            drag.clicked = clicked && !drag.aiming;
             // A Ctrl+click without a drag only selects (below): nothing is launched.
             if (drag.aiming && drag.moved) finish_launch_aim(drag.aim, session);
             cancel_launch_aim(drag.aim);
@@ -74,7 +76,7 @@ std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& ca
     const std::optional<ParticleRef> hit =
         pick_particle(*session.experiment, p.variant, ray_through(cam, p.rect, mx, my), camera, p.rect.h);
     if (!hit) return std::nullopt;
-    if (clicked) {
+    if (clicked && !session.measuring) {
         session.selected_variant = static_cast<int>(hit->variant);
         session.selected_particle = static_cast<int>(hit->particle);
     }

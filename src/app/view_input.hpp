@@ -24,10 +24,11 @@ struct ViewDrag {
     bool moved = false;     // beyond the click tolerance: a drag, not a click
     bool aiming = false;    // a left drag that began with Ctrl: launch aim, the camera stays
     LaunchAim aim;          // active until released (launch) or cancelled (Esc, right-click)
+    bool clicked = false;   // this frame: a left click (no drag) over the view ended at (press_x, press_y)
 };
 
 // Updates the camera from the mouse; returns the particle under the cursor, and selects it in
-// `session` on a click. A Ctrl+left drag aims instead and launches on release.
+// `session` on a click (not while the measuring tool is on: the click is its, drag.clicked). A Ctrl+left drag aims instead and launches on release.
 std::optional<HoveredParticle> handle_view_mouse(ViewDrag& drag, OrbitCamera& camera, const std::vector<ViewPane>& panes,
                                                  ui::LabSession& session);
 

@@ -108,6 +108,12 @@ ViewCommand draw_view_toolbar(ui::LabSession& s, RecordControl& record) {
     if (single && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("Split view needs a preset with several variants");
     if (s.split_view && !single) pane_chooser(s);
+    ImGui::SameLine();
+    if (toggle_button("Measure", s.measuring,
+                      "M: click two points (a ball, or a trail: the nearest sample) to read the distance and the\n"
+                      "time between them; Esc clears"))
+        s.measure_points.clear();
+    ui::note_item_rect(s, "view.measure");
 
     ImGui::SameLine(0.0f, 18.0f);
     // The camera buttons in a row when they fit, otherwise behind one "View" button.

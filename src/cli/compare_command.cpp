@@ -81,7 +81,22 @@ Json comparison_json(const Scene& scene, const Comparison& c, const CompareCliOp
         variants.push_back(jv);
     }
     j["variants"] = variants;
+    // The preset's "expect" list beside what this run measured (any particle, not only --particle).
+    j["expectations"] = expectations_json(check_expectations(scene.expect, c.variants));
     return j;
+}
+
+// The preset's expectations as a table after the metrics (nothing when it names none).
+void print_expectations(const Scene& scene, const Comparison& c) {
+    if (scene.expect.empty()) return;
+    std::printf("\nexpected by the preset\n");
+    Table t;
+    t.header = {"quantity", "variant", "particle", "expected", "tolerance", "measured", ""};
+    for (const ExpectationResult& r : check_expectations(scene.expect, c.variants))
+        t.rows.push_back({to_string(r.expected.quantity), printable(variant_name(scene, r.expected.variant)),
+                          std::to_string(r.expected.particle), sig(r.expected.value), sig(r.expected.tolerance),
+                          sig(r.measured), r.met ? "met" : "NOT MET"});
+    t.print();
 }
 
 int compare(const CompareCliOptions& o) {
@@ -155,6 +170,7 @@ int compare(const CompareCliOptions& o) {
                           signed_sig(x.cost * 1e3)});
     }
     d.print();
+    print_expectations(*scene, c);
     std::printf("\nflight: time to the first impact; range@1st: horizontal distance from the start to it; apex: highest\n"
                 "centre height over the floor; rest: time the particle stopped for good; cost: physics wall time per\n"
                 "simulated second.\n");

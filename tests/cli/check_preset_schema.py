@@ -28,6 +28,7 @@ CANNOT_TELL = {
     "088_emitter_region_reversed.json": "region_min <= region_max: a relation between two fields",
     "090_emitter_radius_too_large.json": "radius_max < half the room's smallest size: a relation between two sections",
     "094_duplicate_variant_label.json": "unique labels: uniqueItems compares whole variants, not one key of them",
+    "110_expect_particle_out_of_range.json": "expect[].particle < the number of particles: a relation between two sections",
 }
 
 

@@ -12,10 +12,12 @@ fail() {
     exit 1
 }
 
-# A scratch directory removed at exit; XDG_CONFIG_HOME inside it so no user settings leak in.
+# A scratch directory removed at exit; XDG_CONFIG_HOME and XDG_DATA_HOME (the user's presets)
+# inside it so no user settings leak in and nothing is written into the user's folders.
 make_workdir() {
     WORK=$(mktemp -d)
     export XDG_CONFIG_HOME="$WORK/config"
+    export XDG_DATA_HOME="$WORK/data"
     APP_PID=""
     trap 'cleanup_app; rm -rf "$WORK"' EXIT
 }
@@ -173,4 +175,26 @@ click_widget() {
     local state=$1 name=$2 x y
     read -r x y < <(widget_center "$state" "$name")
     xdotool mousemove --window "$APP_WINDOW" "$x" "$y" click 1
+}
+
+# An edit as a user makes it: a new dt typed into the Time section's field (clicked through the
+# state dump $STATE); waits until the scene is dirty with dt = $EDITED_DT.
+edit_dt() {
+    click_widget "$STATE" time.dt
+    wait_for_state "$STATE" 'd["text_input"]' "a click on the dt field did not put the keyboard in it"
+    xdotool key ctrl+a
+    xdotool type --delay 4 "$EDITED_DT"
+    # Enter again if a frame slower than hold_key's 0.12 s missed it (a loaded machine); once
+    # applied, the keyboard has left the field and another Enter does nothing.
+    local applied="d['dirty'] and d['scene_dt'] == $EDITED_DT and not d['text_input']"
+    for _ in 1 2; do
+        hold_key Return
+        for _ in $(seq 40); do
+            dump_now "$STATE"
+            "$PYTHON" -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' \
+                "$STATE" "$applied" && return 0
+            sleep 0.05
+        done
+    done
+    wait_for_state "$STATE" "$applied" "editing dt did not apply"
 }

@@ -14,16 +14,6 @@ TARGET="$SRC/presets/launch_velocities.json"
 LISTED=dt_ladder
 EDITED_DT=0.004  # every preset used here has another dt
 
-# The edit: a new dt typed into the Time section's field.
-edit_dt() {
-    click_widget "$STATE" time.dt
-    wait_for_state "$STATE" 'd["text_input"]' "a click on the dt field did not put the keyboard in it"
-    xdotool key ctrl+a
-    xdotool type --delay 4 "$EDITED_DT"
-    hold_key Return
-    wait_for_state "$STATE" "d['dirty'] and d['scene_dt'] == $EDITED_DT and not d['text_input']" "editing dt did not apply"
-}
-
 # Waits for the dialog asking about `kind`, then clicks its button `answer` (cancel, discard).
 answer_dialog() {
     local kind=$1 answer=$2

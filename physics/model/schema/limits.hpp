@@ -24,6 +24,8 @@ constexpr double max_rest_speed_mps = 1e3;
 constexpr double max_dt_s = 1.0;
 constexpr double max_tolerance = 1.0;
 constexpr double max_period_s = 1e6;
+// An expectation's tolerance, in its quantity's unit (s, m, J or a count).
+constexpr double max_expectation_tolerance = 1e12;
 // Seeds take every uint64 (the GUI's number field refuses a seed it cannot show exactly).
 constexpr std::uint64_t max_seed = std::numeric_limits<std::uint64_t>::max();
 // Largest particle count a preset may ask for (explicit + emitted).

@@ -6,6 +6,7 @@
 #include "physics/model/schema/contact_fields.hpp"
 #include "physics/model/schema/drag_fields.hpp"
 #include "physics/model/schema/emitter_fields.hpp"
+#include "physics/model/schema/expectation_fields.hpp"
 #include "physics/model/schema/integrator_fields.hpp"
 #include "physics/model/schema/particle_fields.hpp"
 #include "physics/model/schema/room_fields.hpp"
@@ -41,6 +42,11 @@ struct SectionSchema<Scene> {
                         "Each overrides whole sections and runs in lockstep with the others from the same particles.",
                         false, "variant"},
               &Scene::variants);
+        visit(ChildInfo{"expect",
+                        "Quantities worth watching with their expected values; `compare --json` and the GUI show "
+                        "measured beside expected.",
+                        false, "expectation"},
+              &Scene::expect);
     }
 };
 
