@@ -60,17 +60,26 @@ struct World {
 
 enum class DragModel { none, linear, quadratic, sphere_re };
 
+// Magnus lift coefficient C_L(S) of the spin parameter S = R |w| / |u| (terms/magnus.hpp).
+enum class LiftModel { none, sawicki, nathan };
+
 struct DragSettings {
     DragModel model = DragModel::none;
     double cd = 0.47;  // quadratic: constant drag coefficient (smooth sphere, subcritical)
     // linear: explicit coefficient b in N s/m; when absent, Stokes b = 6 pi mu R from the air.
     std::optional<double> linear_b;
+    LiftModel lift = LiftModel::none;  // Magnus lift on spinning particles (terms/magnus.hpp)
+    double spin_decay_s = 30.0;        // with lift: time constant of the spin's aerodynamic decay
 };
 
 struct ContactSettings {
     double restitution = 0.8;  // e on the normal velocity, 0..1
     double friction = 0.3;     // Coulomb mu, >= 0
     double rest_speed = 0.05;  // rebound speed (m/s) below which a particle comes to rest
+    // true: friction at the walls acts at the contact point and couples to the particle's spin, so
+    // a sliding ball ends up rolling (stepping/spin_contact.hpp); false: the seed's point-mass friction.
+    bool spin = false;
+    double rolling_resistance = 0.0;  // with spin: c_rr, a rolling ball decelerates at c_rr times the press
 };
 
 enum class Method { explicit_euler, semi_implicit_euler, velocity_verlet, rk4, dopri5, exponential };
@@ -83,11 +92,17 @@ struct IntegratorSettings {
     bool adaptive = true;  // dopri5: false takes exactly one Dormand-Prince step per dt
 };
 
+// Moment of inertia of a sphere, I = k m R^2: solid k = 2/5, thin hollow shell k = 2/3.
+enum class Inertia { solid, hollow };
+double inertia_factor(Inertia shape);  // k
+
 struct ParticleSpec {
     Vec3 position{0.0, 1.0, 0.0};
     Vec3 velocity{0.0, 0.0, 0.0};
     double mass = 0.057;     // kg (a tennis ball)
     double radius = 0.033;   // m
+    Vec3 spin{0.0, 0.0, 0.0};  // angular velocity, rad/s (acts with drag.lift or contact.spin)
+    Inertia inertia = Inertia::solid;
 };
 
 // Creates `count` particles, seeded and reproducible.
@@ -145,6 +160,8 @@ std::vector<ParticleSpec> initial_particles(const Scene& scene);
 const char* to_string(Method m);
 const char* to_string(DragModel d);
 const char* to_string(WindKind w);
+const char* to_string(LiftModel l);
+const char* to_string(Inertia i);
 std::optional<Method> method_from_string(const std::string& s);
 std::optional<DragModel> drag_model_from_string(const std::string& s);
 std::optional<WindKind> wind_kind_from_string(const std::string& s);
@@ -153,5 +170,9 @@ std::optional<WindKind> wind_kind_from_string(const std::string& s);
 int method_order(Method m);
 // Largest stable h*k for linear decay a = -k v; +inf where unconditionally stable.
 double method_stability_limit(Method m);
+
+// Whether the particles' spin takes part in the motion (Magnus lift or contact coupled to spin);
+// such a model runs on the generic kernel, which carries the spin.
+inline bool spin_matters(const Model& m) { return m.drag.lift != LiftModel::none || m.contact.spin; }
 
 }  // namespace pl

@@ -17,6 +17,7 @@
 #include "physics/stepping/events.hpp"
 #include "physics/stepping/integrators.hpp"
 #include "physics/stepping/kernel.hpp"
+#include "physics/stepping/spin_contact.hpp"
 
 #include <cmath>
 #include <vector>
@@ -39,6 +40,7 @@ struct ParticleStep {
     double step_hint = 0.0;  // dopri5
     std::uint8_t resting = 0;
     double bounce_loss = 0.0, friction_loss = 0.0;  // per kg, during this step
+    SpinStep spin;  // the generic kernel's, where the model's spin_matters
 };
 
 inline bool is_finite(const FlightState& y) {
@@ -325,7 +327,8 @@ private:
     void hit_wall(ParticleStep& p, std::uint32_t id, int wall, double t) const {
         const Vec3 n = RoomBounds::inward_normal(wall);
         const double speed_in = glm::length(p.y.v);
-        ImpactResult r = impact(p.y.v, n, *c_.contact);
+        ImpactResult r = c_.contact->spin ? spin_impact(p.y.v, p.spin, n, p.radius, *c_.contact, t)
+                                          : impact(p.y.v, n, *c_.contact);
         p.bounce_loss += r.bounce_loss_per_kg;
         p.friction_loss += r.friction_loss_per_kg;
         p.y.v = r.v_out;
@@ -370,6 +373,9 @@ private:
 
     // Resting contact for the rest of the step (first order, semi-implicit; see file comment).
     void slide(ParticleStep& p, std::uint32_t id, double t, double h, const Derivative& d) const {
+        if (c_.contact->spin && spin_slide(p, *c_.room, *c_.contact, t, h, d, c_.events, id,
+                                           [&](int w, double t_hit) { hit_wall(p, id, w, t_hit); }))
+            return;
         Vec3 a = d.a;
         double press = 0.0;
         for (int w = 0; w < wall_count; ++w) {

@@ -13,6 +13,12 @@ inline constexpr Field<ContactSettings> contact_rows[] = {
            "Coulomb friction coefficient on the walls."),
     number("rest_speed", &ContactSettings::rest_speed, "m/s", non_negative(max_rest_speed_mps), "rest speed",
            "A rebound slower than this ends in rest on the wall."),
+    boolean("spin", &ContactSettings::spin, "friction spins the ball",
+            "true: friction acts at the contact point and couples to the spin (a sliding ball ends up rolling "
+            "at 5/7 of its speed, solid); false: point-mass friction, the spin is left alone."),
+    number("rolling_resistance", &ContactSettings::rolling_resistance, "", non_negative(max_friction),
+           "rolling resistance c_rr",
+           "With spin: a rolling ball decelerates at c_rr g (stops after v^2 / (2 c_rr g)); about 0.001 to 0.02."),
 };
 
 template <>
