@@ -48,6 +48,9 @@ std::uint64_t hash_result(const Simulation& sim) {
     for (const auto* a : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.dissipated_bounce, &s.dissipated_friction,
                           &s.dissipated_drag, &s.wind_work, &s.initial_energy})
         f.doubles(*a);
+    // The rotation, where it takes part (only then: the hashes pinned before it existed stay).
+    if (spin_matters(sim.model()))
+        for (const auto* a : {&s.wx, &s.wy, &s.wz, &s.dissipated_rolling}) f.doubles(*a);
     f.bytes(s.resting);
     f.bytes(s.frozen);
     f.u64(sim.events().size());
@@ -119,6 +122,9 @@ void check(const Scene& scene, const Case& c) {
 const Case preset_cases[] = {
     {"altitude_air.json", 0, 2500, 0x9d712657ea4c275dull},
     {"altitude_air.json", 1, 2500, 0x7aab62e05eb89379ull},
+    {"curve_ball.json", 0, 2500, 0xd611590f819a3909ull},
+    {"curve_ball.json", 1, 2500, 0xc854662dc6054107ull},
+    {"curve_ball.json", 2, 2500, 0x7fd398de6a8b689full},
     {"default.json", 0, 2500, 0xf7ea62c8de8bbb63ull},
     {"drag_models.json", 0, 2500, 0x6899021c8e5c8820ull},
     {"drag_models.json", 1, 2500, 0x5dc0465278cf9e39ull},
@@ -145,6 +151,10 @@ const Case preset_cases[] = {
     {"restitution.json", 0, 2500, 0xa6abca908c24ebafull},
     {"restitution.json", 1, 2500, 0x677923342be4ec2full},
     {"restitution.json", 2, 2500, 0xe0a8d6a32b3b9075ull},
+    {"slide_roll_stop.json", 0, 7000, 0xdc4f57b46bad2411ull},
+    {"slide_roll_stop.json", 1, 7000, 0x4ab31199cd9498a2ull},
+    {"spin_bounce.json", 0, 2500, 0x21f9b934afe90035ull},
+    {"spin_bounce.json", 1, 2500, 0x182ee8c3d9af1bedull},
     {"wind_kinds.json", 0, 2500, 0x9757d91259dfdbc5ull},
     {"wind_kinds.json", 1, 2500, 0x2c2eb9cfbb30b41cull},
     {"wind_kinds.json", 2, 2500, 0xae796826b6c5fa9cull},
