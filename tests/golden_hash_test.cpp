@@ -155,6 +155,8 @@ const Case preset_cases[] = {
     {"slide_roll_stop.json", 1, 7000, 0x4ab31199cd9498a2ull},
     {"spin_bounce.json", 0, 2500, 0x21f9b934afe90035ull},
     {"spin_bounce.json", 1, 2500, 0x182ee8c3d9af1bedull},
+    {"viscoelastic_bounce.json", 0, 2500, 0x14d50ca55d187415ull},
+    {"viscoelastic_bounce.json", 1, 2500, 0xfe15812cc168327cull},
     {"wind_kinds.json", 0, 2500, 0x9757d91259dfdbc5ull},
     {"wind_kinds.json", 1, 2500, 0x2c2eb9cfbb30b41cull},
     {"wind_kinds.json", 2, 2500, 0xae796826b6c5fa9cull},

@@ -97,6 +97,8 @@ void check_model(const Model& m, const std::vector<ParticleSpec>& particles) {
     non_negative("contact.friction", m.contact.friction);
     non_negative("contact.rest_speed", m.contact.rest_speed);
     non_negative("contact.rolling_resistance", m.contact.rolling_resistance);
+    if (m.contact.restitution_law != RestitutionLaw::constant)
+        positive("contact.restitution_speed", m.contact.restitution_speed);
     for (std::size_t i = 0; i < particles.size(); ++i) check_particle(m, particles[i], i);
 }
 

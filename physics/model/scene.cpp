@@ -82,6 +82,14 @@ const char* to_string(Inertia i) {
     return "?";
 }
 
+const char* to_string(RestitutionLaw l) {
+    switch (l) {
+        case RestitutionLaw::constant: return "constant";
+        case RestitutionLaw::viscoelastic: return "viscoelastic";
+    }
+    return "?";
+}
+
 double inertia_factor(Inertia shape) { return shape == Inertia::hollow ? 2.0 / 3.0 : 2.0 / 5.0; }
 
 std::optional<Method> method_from_string(const std::string& s) {

@@ -72,14 +72,19 @@ struct DragSettings {
     double spin_decay_s = 30.0;        // with lift: time constant of the spin's aerodynamic decay
 };
 
+// How e depends on the impact speed v_n (contact.restitution_law; physics/model/restitution.hpp).
+enum class RestitutionLaw { constant, viscoelastic };
+
 struct ContactSettings {
-    double restitution = 0.8;  // e on the normal velocity, 0..1
+    double restitution = 0.8;  // e on the normal velocity, 0..1 (viscoelastic: at restitution_speed)
     double friction = 0.3;     // Coulomb mu, >= 0
     double rest_speed = 0.05;  // rebound speed (m/s) below which a particle comes to rest
     // true: friction at the walls acts at the contact point and couples to the particle's spin, so
     // a sliding ball ends up rolling (stepping/spin_contact.hpp); false: the seed's point-mass friction.
     bool spin = false;
     double rolling_resistance = 0.0;  // with spin: c_rr, a rolling ball decelerates at c_rr times the press
+    RestitutionLaw restitution_law = RestitutionLaw::constant;
+    double restitution_speed = 1.0;  // viscoelastic: the impact speed (m/s) at which e = restitution
 };
 
 enum class Method { explicit_euler, semi_implicit_euler, velocity_verlet, rk4, dopri5, exponential };
@@ -162,6 +167,7 @@ const char* to_string(DragModel d);
 const char* to_string(WindKind w);
 const char* to_string(LiftModel l);
 const char* to_string(Inertia i);
+const char* to_string(RestitutionLaw l);
 std::optional<Method> method_from_string(const std::string& s);
 std::optional<DragModel> drag_model_from_string(const std::string& s);
 std::optional<WindKind> wind_kind_from_string(const std::string& s);
@@ -174,5 +180,10 @@ double method_stability_limit(Method m);
 // Whether the particles' spin takes part in the motion (Magnus lift or contact coupled to spin);
 // such a model runs on the generic kernel, which carries the spin.
 inline bool spin_matters(const Model& m) { return m.drag.lift != LiftModel::none || m.contact.spin; }
+// Whether the model needs the generic kernel: spin, or a restitution that depends on the speed
+// (the fast kernel's contact lanes apply a constant e).
+inline bool needs_generic_kernel(const Model& m) {
+    return spin_matters(m) || m.contact.restitution_law != RestitutionLaw::constant;
+}
 
 }  // namespace pl

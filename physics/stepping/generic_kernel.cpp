@@ -69,8 +69,8 @@ void step_kernel(const KernelContext& k, std::uint32_t steps) {
 }  // namespace
 
 StepKernel pick_kernel(const Model& m, KernelChoice choice) {
-    // The fast kernel steps point masses; a model whose spin matters runs here.
-    if (choice == KernelChoice::fast && !spin_matters(m)) return pick_fast_kernel(m);
+    // The fast kernel steps point masses with a constant e; spin or e(v_n) run here.
+    if (choice == KernelChoice::fast && !needs_generic_kernel(m)) return pick_fast_kernel(m);
     return terms::with_enabled_terms(m, []<class F>() -> StepKernel { return &step_kernel<F>; });
 }
 

@@ -13,6 +13,7 @@
 //    position exactly on the plane, so it cannot jitter or sink.
 #pragma once
 
+#include "physics/model/restitution.hpp"
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/events.hpp"
 #include "physics/stepping/integrators.hpp"
@@ -327,8 +328,8 @@ private:
     void hit_wall(ParticleStep& p, std::uint32_t id, int wall, double t) const {
         const Vec3 n = RoomBounds::inward_normal(wall);
         const double speed_in = glm::length(p.y.v);
-        ImpactResult r = c_.contact->spin ? spin_impact(p.y.v, p.spin, n, p.radius, *c_.contact, t)
-                                          : impact(p.y.v, n, *c_.contact);
+        const ContactSettings contact = at_impact_speed(*c_.contact, -glm::dot(p.y.v, n));
+        ImpactResult r = contact.spin ? spin_impact(p.y.v, p.spin, n, p.radius, contact, t) : impact(p.y.v, n, contact);
         p.bounce_loss += r.bounce_loss_per_kg;
         p.friction_loss += r.friction_loss_per_kg;
         p.y.v = r.v_out;
@@ -339,7 +340,7 @@ private:
             // presses the particle on the wall. Against a wall nothing presses it on, a lossy
             // wall (e < 1) still ends the slow normal motion, so it cannot creep forever.
             const bool pressed = pressed_on(p, n, t);
-            if (pressed || c_.contact->restitution < 1.0) {
+            if (pressed || contact.restitution < 1.0) {
                 p.bounce_loss += 0.5 * r.normal_speed_out * r.normal_speed_out;
                 p.y.v -= glm::dot(p.y.v, n) * n;
             }
