@@ -48,6 +48,9 @@ std::uint64_t hash_result(const Simulation& sim) {
     for (const auto* a : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.dissipated_bounce, &s.dissipated_friction,
                           &s.dissipated_drag, &s.wind_work, &s.initial_energy})
         f.doubles(*a);
+    // The rotation, where it takes part (only then: the hashes pinned before it existed stay).
+    if (spin_matters(sim.model()))
+        for (const auto* a : {&s.wx, &s.wy, &s.wz, &s.dissipated_rolling}) f.doubles(*a);
     f.bytes(s.resting);
     f.bytes(s.frozen);
     f.u64(sim.events().size());
@@ -119,6 +122,9 @@ void check(const Scene& scene, const Case& c) {
 const Case preset_cases[] = {
     {"altitude_air.json", 0, 2500, 0x30b8e05261bf106cull},
     {"altitude_air.json", 1, 2500, 0x1a8437fc3c733e87ull},
+    {"curve_ball.json", 0, 2500, 0xd611590f819a3909ull},
+    {"curve_ball.json", 1, 2500, 0xc854662dc6054107ull},
+    {"curve_ball.json", 2, 2500, 0x7fd398de6a8b689full},
     {"default.json", 0, 2500, 0xdb12f395ab44bf29ull},
     {"drag_models.json", 0, 2500, 0xb34155b1defd7a44ull},
     {"drag_models.json", 1, 2500, 0x6f47d85198f9b787ull},
@@ -145,6 +151,12 @@ const Case preset_cases[] = {
     {"restitution.json", 0, 2500, 0xc2830ef3be8674dbull},
     {"restitution.json", 1, 2500, 0xd2cbb1d69815f73aull},
     {"restitution.json", 2, 2500, 0x29bb291b5dd5ca29ull},
+    {"slide_roll_stop.json", 0, 7000, 0xdc4f57b46bad2411ull},
+    {"slide_roll_stop.json", 1, 7000, 0x4ab31199cd9498a2ull},
+    {"spin_bounce.json", 0, 2500, 0x21f9b934afe90035ull},
+    {"spin_bounce.json", 1, 2500, 0x182ee8c3d9af1bedull},
+    {"viscoelastic_bounce.json", 0, 2500, 0x14d50ca55d187415ull},
+    {"viscoelastic_bounce.json", 1, 2500, 0xfe15812cc168327cull},
     {"wind_kinds.json", 0, 2500, 0xaf1fda171321aa98ull},
     {"wind_kinds.json", 1, 2500, 0x798233e9179c4b5cull},
     {"wind_kinds.json", 2, 2500, 0x20db4706c3838324ull},

@@ -30,7 +30,7 @@ TEST(PresetErrors, EveryProblemIsReportedWithPathAndRule) {
     EXPECT_FALSE(r.scene.has_value());
     const std::string expected =
         "room.size[1]: must be > 0, got 0\n"
-        "drag.cdd: unknown key (expected one of model, cd, b)\n"
+        "drag.cdd: unknown key (expected one of model, cd, b, lift, spin_decay)\n"
         "contact.restitution: must be in [0, 1], got 1.5\n"
         "integrator.method: unknown value \"rk5\"; expected one of explicit_euler, semi_implicit_euler, "
         "velocity_verlet, rk4, dopri5, exponential\n"

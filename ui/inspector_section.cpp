@@ -72,6 +72,10 @@ void draw_inspector_section(LabSession& s) {
         row("lost in bounces", en.dissipated_bounce);
         row("lost to friction", en.dissipated_friction);
         row("lost to drag", en.dissipated_drag);
+        if (spin_matters(m)) {
+            row("spin kinetic", en.spin);
+            row("lost to rolling", en.dissipated_rolling);
+        }
         row("work by wind", en.wind_work);
         row("initial", en.initial);
         row("residual (integrator)", en.residual());

@@ -46,9 +46,12 @@ template <class... Terms>
 struct Forces : Terms... {
     using DragTerm = typename detail::first_with_role<TermRole::drag, Terms...>::type;
     using AirTerm = typename detail::first_with_role<TermRole::air, Terms...>::type;
+    using LiftTerm = typename detail::first_with_role<TermRole::lift, Terms...>::type;
     static constexpr bool has_drag = !std::is_void_v<DragTerm>;
     static constexpr bool has_wind = !std::is_void_v<AirTerm>;
-    static constexpr bool has_extra_body = ((Terms::role == TermRole::body) || ...);
+    static constexpr bool has_lift = !std::is_void_v<LiftTerm>;
+    // Forces besides gravity and drag (the exponential step freezes them over the step).
+    static constexpr bool has_extra_body = ((Terms::role == TermRole::body) || ...) || has_lift;
     // Which ledger lines the enabled terms write (a line nobody writes is left untouched).
     static constexpr bool writes_drag = ((Terms::ledger == Ledger::drag) || ...);
     static constexpr bool writes_air_work = ((Terms::ledger == Ledger::air_work) || ...);
@@ -87,6 +90,9 @@ struct Forces : Terms... {
             d.a += a_drag;
             d.drag_power = drag_power(c, u);
             if constexpr (has_wind) d.wind_power = AirTerm::power(a_drag, w);
+            add_lift(d, u, v, t);
+        } else {
+            add_lift(d, v, v, t);
         }
         (add_body<Terms>(d, v), ...);
         return d;
@@ -100,6 +106,12 @@ struct Forces : Terms... {
             ++DragTerm::evals;
             l.wind = air_velocity(x, t);
             l.k = drag_rate(v - l.wind);
+        }
+        if constexpr (has_lift) {
+            Derivative lift;
+            add_lift(lift, v - l.wind, v, t);
+            l.body += lift.a;
+            l.extra += lift.a;
         }
         (add_body<Terms>(l), ...);
         return l;
@@ -119,6 +131,17 @@ struct Forces : Terms... {
 private:
     using GravityTerm = typename detail::first_with_role<TermRole::gravity, Terms...>::type;
     const GravityTerm& gravity_term() const { return *this; }
+
+    // The lift at air-relative velocity u (normal to u: its work dot(a, v) is done by the air).
+    void add_lift([[maybe_unused]] Derivative& d, [[maybe_unused]] const Vec3& u, [[maybe_unused]] const Vec3& v,
+                  [[maybe_unused]] double t) const {
+        if constexpr (has_lift) {
+            ++LiftTerm::evals;
+            const Vec3 a = LiftTerm::lift(u, t);
+            d.a += a;
+            d.wind_power += glm::dot(a, v);
+        }
+    }
 
     // Body terms other than gravity, after the drag: their acceleration and their work.
     template <class T>

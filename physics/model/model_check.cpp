@@ -60,6 +60,9 @@ void check_particle(const Model& m, const ParticleSpec& p, std::size_t i) {
     positive(at + ".radius", p.radius);
     finite(at + ".position", p.position);
     finite(at + ".velocity", p.velocity);
+    finite(at + ".spin", p.spin);
+    if (p.inertia != Inertia::solid && p.inertia != Inertia::hollow)
+        fail(at + ".inertia", "must be solid or hollow");
     const Vec3 lo = m.room.min_corner(), hi = m.room.max_corner();
     for (int a = 0; a < 3; ++a) {
         // The preset reader's tolerance for a sphere placed exactly on a wall (y = floor + radius).
@@ -88,10 +91,14 @@ void check_model(const Model& m, const std::vector<ParticleSpec>& particles) {
     check_wind(m.world.wind);
     non_negative("drag.cd", m.drag.cd);
     if (m.drag.linear_b) non_negative("drag.b", *m.drag.linear_b);
+    if (m.drag.lift != LiftModel::none) positive("drag.spin_decay", m.drag.spin_decay_s);
     if (!(m.contact.restitution >= 0.0 && m.contact.restitution <= 1.0))
         fail("contact.restitution", fmt::format("must be in [0, 1], got {}", m.contact.restitution));
     non_negative("contact.friction", m.contact.friction);
     non_negative("contact.rest_speed", m.contact.rest_speed);
+    non_negative("contact.rolling_resistance", m.contact.rolling_resistance);
+    if (m.contact.restitution_law != RestitutionLaw::constant)
+        positive("contact.restitution_speed", m.contact.restitution_speed);
     for (std::size_t i = 0; i < particles.size(); ++i) check_particle(m, particles[i], i);
 }
 

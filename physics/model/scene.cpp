@@ -63,6 +63,33 @@ const char* to_string(WindKind w) {
     return "?";
 }
 
+const char* to_string(LiftModel l) {
+    switch (l) {
+        case LiftModel::none: return "none";
+        case LiftModel::sawicki: return "sawicki";
+        case LiftModel::nathan: return "nathan";
+    }
+    return "?";
+}
+
+const char* to_string(Inertia i) {
+    switch (i) {
+        case Inertia::solid: return "solid";
+        case Inertia::hollow: return "hollow";
+    }
+    return "?";
+}
+
+const char* to_string(RestitutionLaw l) {
+    switch (l) {
+        case RestitutionLaw::constant: return "constant";
+        case RestitutionLaw::viscoelastic: return "viscoelastic";
+    }
+    return "?";
+}
+
+double inertia_factor(Inertia shape) { return shape == Inertia::hollow ? 2.0 / 3.0 : 2.0 / 5.0; }
+
 std::optional<Method> method_from_string(const std::string& s) {
     for (Method m : {Method::explicit_euler, Method::semi_implicit_euler, Method::velocity_verlet,
                      Method::rk4, Method::dopri5, Method::exponential})

@@ -62,17 +62,31 @@ struct World {
 
 enum class DragModel { none, linear, quadratic, sphere_re };
 
+// Magnus lift coefficient C_L(S) of the spin parameter S = R |w| / |u| (terms/magnus.hpp).
+enum class LiftModel { none, sawicki, nathan };
+
 struct DragSettings {
     DragModel model = DragModel::none;
     double cd = 0.47;  // quadratic: constant drag coefficient (smooth sphere, subcritical)
     // linear: explicit coefficient b in N s/m; when absent, Stokes b = 6 pi mu R from the air.
     std::optional<double> linear_b;
+    LiftModel lift = LiftModel::none;  // Magnus lift on spinning particles (terms/magnus.hpp)
+    double spin_decay_s = 30.0;        // with lift: time constant of the spin's aerodynamic decay
 };
 
+// How e depends on the impact speed v_n (contact.restitution_law; physics/model/restitution.hpp).
+enum class RestitutionLaw { constant, viscoelastic };
+
 struct ContactSettings {
-    double restitution = 0.8;  // e on the normal velocity, 0..1
+    double restitution = 0.8;  // e on the normal velocity, 0..1 (viscoelastic: at restitution_speed)
     double friction = 0.3;     // Coulomb mu, >= 0
     double rest_speed = 0.05;  // rebound speed (m/s) below which a particle comes to rest
+    // true: friction at the walls acts at the contact point and couples to the particle's spin, so
+    // a sliding ball ends up rolling (stepping/spin_contact.hpp); false: the seed's point-mass friction.
+    bool spin = false;
+    double rolling_resistance = 0.0;  // with spin: c_rr, a rolling ball decelerates at c_rr times the press
+    RestitutionLaw restitution_law = RestitutionLaw::constant;
+    double restitution_speed = 1.0;  // viscoelastic: the impact speed (m/s) at which e = restitution
 };
 
 enum class Method { explicit_euler, semi_implicit_euler, velocity_verlet, rk4, dopri5, exponential };
@@ -85,11 +99,17 @@ struct IntegratorSettings {
     bool adaptive = true;  // dopri5: false takes exactly one Dormand-Prince step per dt
 };
 
+// Moment of inertia of a sphere, I = k m R^2: solid k = 2/5, thin hollow shell k = 2/3.
+enum class Inertia { solid, hollow };
+double inertia_factor(Inertia shape);  // k
+
 struct ParticleSpec {
     Vec3 position{0.0, 1.0, 0.0};
     Vec3 velocity{0.0, 0.0, 0.0};
     double mass = 0.057;     // kg (a tennis ball)
     double radius = 0.033;   // m
+    Vec3 spin{0.0, 0.0, 0.0};  // angular velocity, rad/s (acts with drag.lift or contact.spin)
+    Inertia inertia = Inertia::solid;
 };
 
 // Creates `count` particles, seeded and reproducible.
@@ -148,6 +168,9 @@ std::vector<ParticleSpec> initial_particles(const Scene& scene);
 const char* to_string(Method m);
 const char* to_string(DragModel d);
 const char* to_string(WindKind w);
+const char* to_string(LiftModel l);
+const char* to_string(Inertia i);
+const char* to_string(RestitutionLaw l);
 std::optional<Method> method_from_string(const std::string& s);
 std::optional<DragModel> drag_model_from_string(const std::string& s);
 std::optional<WindKind> wind_kind_from_string(const std::string& s);
@@ -164,5 +187,14 @@ double stability_limit(const IntegratorSettings& integrator);
 // search's round-off) under a constant force, so a located impact state is exact, except
 // explicit Euler's, which gains about g dt of speed on every bounce arc.
 bool keeps_bounce_energy(Method m);
+
+// Whether the particles' spin takes part in the motion (Magnus lift or contact coupled to spin);
+// such a model runs on the generic kernel, which carries the spin.
+inline bool spin_matters(const Model& m) { return m.drag.lift != LiftModel::none || m.contact.spin; }
+// Whether the model needs the generic kernel: spin, or a restitution that depends on the speed
+// (the fast kernel's contact lanes apply a constant e).
+inline bool needs_generic_kernel(const Model& m) {
+    return spin_matters(m) || m.contact.restitution_law != RestitutionLaw::constant;
+}
 
 }  // namespace pl

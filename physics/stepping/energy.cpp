@@ -12,10 +12,16 @@ double potential_energy(const Vec3& g, const Room& room, double mass, const Vec3
 
 double kinetic_energy(double mass, const Vec3& v) { return 0.5 * mass * glm::dot(v, v); }
 
+double spin_energy(double mass, double radius, double inertia, const Vec3& w) {
+    return 0.5 * inertia * mass * radius * radius * glm::dot(w, w);
+}
+
 EnergyBreakdown particle_energy(const ParticleState& s, std::size_t i, const Vec3& g, const Room& room) {
     EnergyBreakdown e;
     e.kinetic = kinetic_energy(s.mass[i], s.velocity(i));
     e.potential = potential_energy(g, room, s.mass[i], s.position(i));
+    e.spin = spin_energy(s.mass[i], s.radius[i], s.inertia[i], s.spin(i));
+    e.dissipated_rolling = s.dissipated_rolling[i];
     e.dissipated_bounce = s.dissipated_bounce[i];
     e.dissipated_friction = s.dissipated_friction[i];
     e.dissipated_drag = s.dissipated_drag[i];
@@ -30,6 +36,8 @@ EnergyBreakdown total_energy(const ParticleState& s, const Vec3& g, const Room& 
         const EnergyBreakdown e = particle_energy(s, i, g, room);
         sum.kinetic += e.kinetic;
         sum.potential += e.potential;
+        sum.spin += e.spin;
+        sum.dissipated_rolling += e.dissipated_rolling;
         sum.dissipated_bounce += e.dissipated_bounce;
         sum.dissipated_friction += e.dissipated_friction;
         sum.dissipated_drag += e.dissipated_drag;

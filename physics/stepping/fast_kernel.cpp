@@ -65,7 +65,8 @@ void fast_step_kernel(const KernelContext& k, std::uint32_t steps) {
 // The kernel of method M for the terms the model enables.
 template <Flight M>
 StepKernel pick_forces(const Model& m) {
-    return terms::with_enabled_terms(m, []<class F>() -> StepKernel { return &fast_step_kernel<M, F>; });
+    return terms::with_enabled_terms<terms::FlightTermGroups>(
+        m, []<class F>() -> StepKernel { return &fast_step_kernel<M, F>; });
 }
 
 }  // namespace

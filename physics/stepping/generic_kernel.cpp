@@ -26,14 +26,19 @@ void generic_step(const KernelContext& k) {
     std::vector<double>* hints = adaptive_on ? &k.adaptive_hint : nullptr;
     const double t0 = k.time(), h = m.integrator.dt;
 
+    const bool spinning = spin_matters(m);
+    const double spin_decay = m.drag.lift != LiftModel::none ? 1.0 / m.drag.spin_decay_s : 0.0;
+
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (s.frozen[i]) continue;
         in.k = s.drag_k[i];
         in.re_scale = s.drag_re_scale[i];
         in.mass = s.mass[i];
         in.radius = s.radius[i];
-        f.load(in);
         ParticleStep p = load_step(s, i, hints, s.radius[i]);
+        if (spinning) p.spin = {{s.spin(i), t0, spin_decay}, s.inertia[i], 0.0};
+        in.spin = &p.spin.clock;
+        f.load(in);
         const bool finished = stepper.advance(p, static_cast<std::uint32_t>(i), t0, h);
         if (const StepFault fault = step_fault(p.y, finished); fault != StepFault::none) {
             // Keep the last good state and stop stepping this particle.
@@ -42,6 +47,11 @@ void generic_step(const KernelContext& k) {
             continue;
         }
         store_step<F>(s, i, p, hints, s.mass[i]);
+        if (spinning) {
+            s.set_spin(i, p.spin.restart(t0 + h, s.radius[i]));
+            s.dissipated_rolling[i] += s.mass[i] * p.spin.rolling_loss;
+            s.dissipated_drag[i] += s.mass[i] * p.spin.decay_loss;
+        }
     }
     add_counts(k.counters, f, adaptive, contact_solves);
 }
@@ -57,7 +67,8 @@ void step_kernel(const KernelContext& k, std::uint32_t steps) {
 }  // namespace
 
 StepKernel pick_kernel(const Model& m, KernelChoice choice) {
-    if (choice == KernelChoice::fast) return pick_fast_kernel(m);
+    // The fast kernel steps point masses with a constant e; spin or e(v_n) run here.
+    if (choice == KernelChoice::fast && !needs_generic_kernel(m)) return pick_fast_kernel(m);
     return terms::with_enabled_terms(m, []<class F>() -> StepKernel { return &step_kernel<F>; });
 }
 

@@ -40,16 +40,21 @@ struct ParticleState {
     StateArray<double> drag_k, drag_re_scale;  // see DragCoefficients
     StateArray<std::uint8_t> resting;          // bit mask of walls it rests on
     StateArray<std::uint8_t> frozen;           // 1: state became non-finite, no longer stepped
+    StateArray<double> wx, wy, wz;             // angular velocity, rad/s (stepped only where spin_matters)
+    StateArray<double> inertia;                // k in I = k m R^2 (2/5 solid, 2/3 hollow)
 
     // Energy ledger, J, accumulated since the start.
     StateArray<double> dissipated_bounce, dissipated_friction, dissipated_drag, wind_work;
-    StateArray<double> initial_energy;  // KE + PE at t = 0
+    StateArray<double> dissipated_rolling;  // by rolling resistance (contact.spin)
+    StateArray<double> initial_energy;  // KE + spin KE + PE at t = 0
 
     std::size_t size() const { return x.size(); }
     Vec3 position(std::size_t i) const { return {x[i], y[i], z[i]}; }
     Vec3 velocity(std::size_t i) const { return {vx[i], vy[i], vz[i]}; }
     void set_position(std::size_t i, const Vec3& p) { x[i] = p.x; y[i] = p.y; z[i] = p.z; }
     void set_velocity(std::size_t i, const Vec3& v) { vx[i] = v.x; vy[i] = v.y; vz[i] = v.z; }
+    Vec3 spin(std::size_t i) const { return {wx[i], wy[i], wz[i]}; }
+    void set_spin(std::size_t i, const Vec3& w) { wx[i] = w.x; wy[i] = w.y; wz[i] = w.z; }
     void resize(std::size_t n);
 };
 

@@ -26,10 +26,12 @@
 //    the kernel freezes the particle and reports it, as it does a non-finite or runaway state.
 #pragma once
 
+#include "physics/model/restitution.hpp"
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/events.hpp"
 #include "physics/stepping/integrators.hpp"
 #include "physics/stepping/kernel.hpp"
+#include "physics/stepping/spin_contact.hpp"
 
 #include <bit>
 #include <cmath>
@@ -53,6 +55,7 @@ struct ParticleStep {
     double step_hint = 0.0;  // dopri5
     std::uint8_t resting = 0;
     double bounce_loss = 0.0, friction_loss = 0.0;  // per kg, during this step
+    SpinStep spin;  // the generic kernel's, where the model's spin_matters
 };
 
 inline bool is_finite(const FlightState& y) {
@@ -434,8 +437,13 @@ private:
         const Vec3 v_in = p.y.v;
         const double speed_in = glm::length(v_in);
         const bool single = std::has_single_bit(walls);
-        const ImpactResult r = single ? impact(v_in, RoomBounds::inward_normal(std::countr_zero(walls)), *c_.contact)
-                                      : corner_impact(v_in, walls, *c_.contact);
+        // One wall: the restitution law at this impact speed, and the spin coupling when the scene
+        // has it; a corner (walls at the same instant) takes the point-mass impact on each.
+        const Vec3 n_single = RoomBounds::inward_normal(std::countr_zero(walls));
+        const ContactSettings contact = single ? at_impact_speed(*c_.contact, -glm::dot(v_in, n_single)) : *c_.contact;
+        const ImpactResult r = !single        ? corner_impact(v_in, walls, contact)
+                               : contact.spin ? spin_impact(v_in, p.spin, n_single, p.radius, contact, t)
+                                              : impact(v_in, n_single, contact);
         p.bounce_loss += r.bounce_loss_per_kg;
         p.friction_loss += r.friction_loss_per_kg;
         p.y.v = r.v_out;
@@ -445,17 +453,17 @@ private:
             if (!(walls & (1u << wall))) continue;
             const Vec3 n = RoomBounds::inward_normal(wall);
             const double normal_in = single ? r.normal_speed_in : std::max(0.0, -glm::dot(v_in, n));
-            const double normal_out = c_.contact->restitution * normal_in;
+            const double normal_out = single ? r.normal_speed_out : contact.restitution * normal_in;
             EventKind kind = EventKind::bounce;
             const double press = -glm::dot(d.a, n);
-            if (settles(normal_in, normal_out, press, *c_.contact, *c_.room, remaining, staggered() ? h : 0.0)) {
+            if (settles(normal_in, normal_out, press, contact, *c_.room, remaining, staggered() ? h : 0.0)) {
                 // Below the rest threshold (or too slow to leave the wall within the step) the
                 // remaining micro-bounces (which would sum to a finite time, t0 (1+e)/(1-e) for a
                 // drop) are replaced by resting contact when the net force presses the particle
                 // on the wall. Against a wall nothing presses it on, a lossy wall (e < 1) still
                 // ends the slow normal motion, so it cannot creep forever.
                 const bool pressed = press > 0.0;
-                if (pressed || c_.contact->restitution < 1.0) {
+                if (pressed || contact.restitution < 1.0) {
                     p.bounce_loss += 0.5 * normal_out * normal_out;
                     p.y.v -= glm::dot(p.y.v, n) * n;
                     fresh = false;
@@ -488,6 +496,11 @@ private:
 
     // Resting contact for the remaining h of the step of length `step` (see file comment).
     void slide(ParticleStep& p, std::uint32_t id, double t, double h, double step, const Derivative& d) const {
+        if (c_.contact->spin && spin_slide(p, *c_.room, *c_.contact, t, h, d, c_.events, id, [&](int w, double t_hit) {
+                Derivative after;
+                hit_walls(p, id, static_cast<std::uint8_t>(1u << w), t_hit, t + h - t_hit, step, after);
+            }))
+            return;
         Vec3 a = d.a;
         double press = 0.0;
         for (int w = 0; w < wall_count; ++w) {

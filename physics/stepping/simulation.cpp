@@ -23,11 +23,14 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
         state_.set_velocity(i, p.velocity);
         state_.mass[i] = p.mass;
         state_.radius[i] = p.radius;
+        state_.set_spin(i, p.spin);
+        state_.inertia[i] = inertia_factor(p.inertia);
         const DragCoefficients c = drag_coefficients(model_.drag, model_.world.air, p.mass, p.radius);
         state_.drag_k[i] = c.k;
         state_.drag_re_scale[i] = c.re_scale;
         state_.initial_energy[i] = kinetic_energy(p.mass, p.velocity) +
-                                   potential_energy(model_.world.gravity, model_.room, p.mass, p.position);
+                                   potential_energy(model_.world.gravity, model_.room, p.mass, p.position) +
+                                   spin_energy(p.mass, p.radius, state_.inertia[i], p.spin);
     }
     identical_particles_ = std::all_of(particles.begin(), particles.end(), [&](const ParticleSpec& p) {
         return p.mass == particles.front().mass && p.radius == particles.front().radius;
@@ -112,6 +115,8 @@ Vec3 Simulation::acceleration(std::size_t i) const {
         in.re_scale = state_.drag_re_scale[i];
         in.mass = state_.mass[i];
         in.radius = state_.radius[i];
+        const SpinClock spin{state_.spin(i), time(), 0.0};
+        in.spin = &spin;
         f.load(in);
         return f(state_.position(i), state_.velocity(i), time()).a;
     });

@@ -86,6 +86,9 @@ void print_summary(const Scene& scene, const std::vector<Simulation>& sims, cons
                     sig(e.initial, 8).c_str(), sig(e.kinetic, 8).c_str(), sig(e.potential, 8).c_str(),
                     sig(e.dissipated_bounce, 8).c_str(), sig(e.dissipated_friction, 8).c_str(),
                     sig(e.dissipated_drag, 8).c_str(), sig(e.wind_work, 8).c_str(), sig(e.residual(), 3).c_str());
+        if (spin_matters(m))
+            std::printf("    + spin kinetic %s + dissipated by rolling resistance %s\n",
+                        sig(e.spin, 8).c_str(), sig(e.dissipated_rolling, 8).c_str());
         const ForceCounters& c = sim.counters();
         std::printf("  force evaluations: gravity %llu, drag %llu, wind %llu; time-of-impact solves %llu",
                     static_cast<unsigned long long>(c.gravity), static_cast<unsigned long long>(c.drag),

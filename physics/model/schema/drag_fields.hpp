@@ -6,6 +6,7 @@
 #include "physics/model/schema/limits.hpp"
 #include "physics/model/terms/drag_linear.hpp"
 #include "physics/model/terms/drag_quadratic.hpp"
+#include "physics/model/terms/magnus.hpp"
 
 namespace pl::schema {
 
@@ -16,6 +17,8 @@ inline constexpr Field<DragSettings> drag_rows[] = {
         "F = -1/2 rho Cd A |v| v. sphere_re: Cd(Re) for a smooth sphere over the whole Reynolds range (Morrison 2013)."),
     terms::cd_row,
     terms::linear_b_row,
+    terms::lift_row,
+    terms::spin_decay_row,
 };
 
 template <>

@@ -11,6 +11,7 @@ constexpr double max_coordinate_m = 1e6;
 constexpr double max_room_size_m = 1e6;
 constexpr double max_speed_mps = 1e5;
 constexpr double max_gravity_mps2 = 1e4;
+constexpr double max_spin_rad_s = 1e5;
 constexpr double max_mass_kg = 1e6;
 // Lightest particle: about a 1 um dust grain (4e-15 kg). Lighter ones are Brownian, outside this
 // model, and a mass such as 5e-324 made the drag stiffness infinite (the particle froze).

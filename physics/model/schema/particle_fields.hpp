@@ -14,6 +14,10 @@ inline constexpr Field<ParticleSpec> particle_rows[] = {
     number("mass", &ParticleSpec::mass, "kg", at_least(min_mass_kg, max_mass_kg), "mass", "0.057 kg: a tennis ball."),
     number("radius", &ParticleSpec::radius, "m", positive(max_room_size_m), "radius",
            "Less than half the room's smallest size."),
+    bounded_vec3("spin", &ParticleSpec::spin, "rad/s", max_spin_rad_s, "spin",
+                 "Angular velocity (right-hand rule); it acts with drag.lift or contact.spin."),
+    enumeration<ParticleSpec, &ParticleSpec::inertia>(
+        "inertia", 2, "inertia", "Moment of inertia: solid (2/5 m R^2) or hollow, a thin shell (2/3 m R^2)."),
 };
 
 template <>

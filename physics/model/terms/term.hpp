@@ -1,6 +1,7 @@
 // What every force term declares (see README, Architecture). A term is a struct with
 //   role     body (a constant force per particle), drag (a = -rate(u) u, u = v - w; at most
-//            one drag term is enabled) or air (the wind w(x, t) the drag sees; needs a drag);
+//            one drag term is enabled), air (the wind w(x, t) the drag sees; needs a drag) or
+//            lift (a = lift(u, t), normal to u, from the particle's spin: terms/magnus.hpp);
 //   ledger   which ledger line its work goes to (potential: gravity's work is the potential
 //            energy; drag: dissipated by drag; air_work: work done by the air);
 //   counter  its slot in ForceCounters, and `evals`, its evaluation count;
@@ -24,8 +25,9 @@
 namespace pl {
 
 class WindField;
+struct SpinClock;
 
-enum class TermRole { gravity, body, drag, air };
+enum class TermRole { gravity, body, drag, air, lift };
 enum class Ledger { potential, drag, air_work };
 
 // Per-particle and scene scalars a term may load (drag constants, wind known in advance, ...).
@@ -36,6 +38,8 @@ struct TermInputs {
     double wx = 0.0, wy = 0.0, wz = 0.0;  // the wind at the particle, where looked up ahead
     double mass = 0.0, radius = 0.0;
     double air_density = 0.0;
+    LiftModel lift = LiftModel::none;  // Magnus: the lift correlation (the scene's)
+    const SpinClock* spin = nullptr;   // Magnus: the particle's spin
 };
 
 // The scene's part of the inputs (the per-particle fields left at 0).
@@ -46,6 +50,7 @@ inline TermInputs scene_inputs(const Model& m, const WindField* wind) {
     in.gz = m.world.gravity.z;
     in.wind = wind;
     in.air_density = m.world.air.density_kg_m3;
+    in.lift = m.drag.lift;
     return in;
 }
 

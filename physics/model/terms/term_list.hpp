@@ -11,6 +11,7 @@
 #include "physics/model/terms/drag_quadratic.hpp"
 #include "physics/model/terms/drag_sphere_re.hpp"
 #include "physics/model/terms/gravity.hpp"
+#include "physics/model/terms/magnus.hpp"
 #include "physics/model/terms/wind.hpp"
 
 #include <tuple>
@@ -21,10 +22,13 @@ namespace pl::terms {
 template <class... Alternatives>
 struct Group {};
 
-// Gravity is always on and comes first; then the groups, in this order.
-using TermGroups = std::tuple<Group<DragLinear, DragQuadratic, DragSphereRe>,  //
-                              Group<Wind>,                                     //
-                              Group<Buoyancy>>;
+// Gravity is always on and comes first; then the groups, in this order. The flight groups are
+// the terms of a point mass (the fast kernel's); the spin group needs the particle's spin, which
+// only the generic kernel carries (scene.hpp: spin_matters).
+using FlightTermGroups = std::tuple<Group<DragLinear, DragQuadratic, DragSphereRe>,  //
+                                    Group<Wind>,                                     //
+                                    Group<Buoyancy>>;
+using TermGroups = decltype(std::tuple_cat(FlightTermGroups{}, std::tuple<Group<Magnus>>{}));
 
 namespace detail {
 
@@ -32,37 +36,37 @@ namespace detail {
 template <class T, class... Chosen>
 constexpr bool fits = T::role != TermRole::air || ((Chosen::role == TermRole::drag) || ...);
 
-template <std::size_t G, class Fn, class... Chosen>
+template <class Groups, std::size_t G, class Fn, class... Chosen>
 auto build(const Model& m, Fn&& fn);
 
 // Tries group G's alternatives A, Rest... in order; none enabled: the group adds nothing.
-template <std::size_t G, class Fn, class... Chosen, class A, class... Rest>
+template <class Groups, std::size_t G, class Fn, class... Chosen, class A, class... Rest>
 auto choose(const Model& m, Fn&& fn, Group<A, Rest...>) {
     if constexpr (fits<A, Chosen...>) {
-        if (A::enabled(m)) return build<G + 1, Fn, Chosen..., A>(m, static_cast<Fn&&>(fn));
+        if (A::enabled(m)) return build<Groups, G + 1, Fn, Chosen..., A>(m, static_cast<Fn&&>(fn));
     }
     if constexpr (sizeof...(Rest) > 0) {
-        return choose<G, Fn, Chosen...>(m, static_cast<Fn&&>(fn), Group<Rest...>{});
+        return choose<Groups, G, Fn, Chosen...>(m, static_cast<Fn&&>(fn), Group<Rest...>{});
     } else {
-        return build<G + 1, Fn, Chosen...>(m, static_cast<Fn&&>(fn));
+        return build<Groups, G + 1, Fn, Chosen...>(m, static_cast<Fn&&>(fn));
     }
 }
 
-template <std::size_t G, class Fn, class... Chosen>
+template <class Groups, std::size_t G, class Fn, class... Chosen>
 auto build(const Model& m, Fn&& fn) {
-    if constexpr (G == std::tuple_size_v<TermGroups>) {
+    if constexpr (G == std::tuple_size_v<Groups>) {
         return fn.template operator()<Forces<Chosen...>>();
     } else {
-        return choose<G, Fn, Chosen...>(m, static_cast<Fn&&>(fn), std::tuple_element_t<G, TermGroups>{});
+        return choose<Groups, G, Fn, Chosen...>(m, static_cast<Fn&&>(fn), std::tuple_element_t<G, Groups>{});
     }
 }
 
 }  // namespace detail
 
-// fn.template operator()<F>() with F = Forces<the terms the model enables>; its result.
-template <class Fn>
+// fn.template operator()<F>() with F = Forces<the terms the model enables among Groups>; its result.
+template <class Groups = TermGroups, class Fn>
 auto with_enabled_terms(const Model& m, Fn&& fn) {
-    return detail::build<0, Fn, Gravity>(m, static_cast<Fn&&>(fn));
+    return detail::build<Groups, 0, Fn, Gravity>(m, static_cast<Fn&&>(fn));
 }
 
 }  // namespace pl::terms
