@@ -187,14 +187,22 @@ edit_dt() {
     # Enter again if a frame slower than hold_key's 0.12 s missed it (a loaded machine); once
     # applied, the keyboard has left the field and another Enter does nothing.
     local applied="d['dirty'] and d['scene_dt'] == $EDITED_DT and not d['text_input']"
-    for _ in 1 2; do
-        hold_key Return
+    press_until Return 2 "$applied" && return 0
+    wait_for_state "$STATE" "$applied" "editing dt did not apply"
+}
+
+# Holds KEY until the state dump meets CONDITION, pressing again (at most TRIES times) when a
+# frame slower than hold_key's hold missed it on a loaded machine; 1 if it never did.
+press_until() {
+    local key=$1 tries=$2 condition=$3
+    for _ in $(seq "$tries"); do
+        hold_key "$key"
         for _ in $(seq 40); do
             dump_now "$STATE"
             "$PYTHON" -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' \
-                "$STATE" "$applied" && return 0
+                "$STATE" "$condition" && return 0
             sleep 0.05
         done
     done
-    wait_for_state "$STATE" "$applied" "editing dt did not apply"
+    return 1
 }

@@ -24,15 +24,7 @@ EDITED_DT=0.004
 # start; a missed Enter changes nothing, so pressing again is safe.
 enter_until() {
     local condition=$1 message=$2
-    for _ in 1 2 3; do
-        hold_key Return
-        for _ in $(seq 40); do
-            dump_now "$STATE"
-            "$PYTHON" -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' \
-                "$STATE" "$condition" && return 0
-            sleep 0.05
-        done
-    done
+    press_until Return 3 "$condition" && return 0
     fail "$message (condition: $condition; state: $(head -c 400 "$STATE"))"
 }
 
@@ -68,12 +60,7 @@ sleep 0.3  # the dialog settles its size on its first frames
 dump_now "$STATE"
 click_widget "$STATE" file_dialog.keep
 wait_for_state "$STATE" "d['file_dialog'] is not None and d['file_dialog']['overwrite'] is None" "Cancel did not go back to the dialog"
-for _ in 1 2 3; do  # again if a slow frame missed it, as for Enter
-    hold_key Escape
-    sleep 0.5
-    dump_now "$STATE"
-    json_get "$STATE" "d['file_dialog'] is None" | grep -q True && break
-done
+press_until Escape 3 "d['file_dialog'] is None" || true  # the wait below says what went wrong
 wait_for_state "$STATE" "d['file_dialog'] is None and d['dirty']" "Esc did not close the dialog (or the edit was lost)"
 cmp -s "$USER_DIR/default.json" "$WORK/copy_before.json" || fail "Cancel on the overwrite question changed the file"
 
