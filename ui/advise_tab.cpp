@@ -71,18 +71,20 @@ void variant_advice(const VariantAdvice& a) {
 void draw_advise_tab(LabSession& s) {
     PanelState& p = panels_of(s);
     p.advice.poll();
+    ImGui::TextUnformatted("tolerances");
+    ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
-    ImGui::InputDouble("m", &p.advice_tolerance_m, 0.0, 0.0, "%.3g");
+    ImGui::InputDouble("m##advise_tolerance", &p.advice_tolerance_m, 0.0, 0.0, "%.3g");
     p.advice_tolerance_m = std::clamp(p.advice_tolerance_m, 1e-9, 1e3);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Tolerance of range, apex height and landing point");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
-    ImGui::InputDouble("s", &p.advice_tolerance_s, 0.0, 0.0, "%.3g");
+    ImGui::InputDouble("s##advise_tolerance", &p.advice_tolerance_s, 0.0, 0.0, "%.3g");
     p.advice_tolerance_s = std::clamp(p.advice_tolerance_s, 1e-9, 1e3);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Tolerance of landing time and time to rest");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
-    ImGui::InputDouble("m/s", &p.advice_tolerance_mps, 0.0, 0.0, "%.3g");
+    ImGui::InputDouble("m/s##advise_tolerance", &p.advice_tolerance_mps, 0.0, 0.0, "%.3g");
     p.advice_tolerance_mps = std::clamp(p.advice_tolerance_mps, 1e-9, 1e3);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Tolerance of impact speeds. A term matters when any metric differs by more than its tolerance");

@@ -89,7 +89,8 @@ struct ModelRun {
     bool buoyancy = false;
     std::array<MetricDelta, advice_metric_count> metrics{};
     bool matters = false;  // some metric beyond tolerance
-    // Kept from the first advisor: max over particles of the landing-point and apex differences, m.
+    // Max over particles of |landing point difference| and |apex difference|, m (summary numbers
+    // beside the metrics: the JSON's landing_difference_m and apex_difference_m).
     double landing_difference_m = 0.0;
     double apex_difference_m = 0.0;
     const MetricDelta& metric(AdviceMetric m) const { return metrics[static_cast<std::size_t>(m)]; }

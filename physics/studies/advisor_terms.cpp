@@ -64,8 +64,8 @@ std::string buoyancy_note(const TermContext& c) {
     return ratio;
 }
 
-// The rows, in the order of the verdicts and of the JSON's "runs". The first four (each drag
-// model against the reference, the reference itself last) keep the first advisor's run order.
+// The rows, in the order of the verdicts and of the JSON's "runs": first each drag model against
+// the reference (the reference itself last, all zeros), then the toggles.
 const std::array<TermRow, 7> rows = {{
     {"no drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::none; },
      use_drag<DragModel::none>, use_reference_drag, nullptr, nullptr, false},
@@ -80,7 +80,7 @@ const std::array<TermRow, 7> rows = {{
     {"buoyancy", TermKind::toggle, [](const Model& m) { return m.world.buoyancy; },
      [](Model& m) { return set(m.world.buoyancy, true); }, [](Model& m) { return set(m.world.buoyancy, false); },
      nullptr, buoyancy_note},
-    // Wind last: the runs of a scene with wind end with the calm run, as in the first advisor.
+    // Wind last: the runs of a scene with wind end with the calm run.
     {"wind", TermKind::toggle, [](const Model& m) { return m.world.wind.kind != WindKind::none; }, as_configured,
      [](Model& m) { return set(m.world.wind.kind, WindKind::none); }, wind_not_applicable, nullptr},
 }};

@@ -16,6 +16,12 @@
 //    [](Model& m) { return set(m.world.added_mass, false); },   // baseline: off
 //    nullptr,    // not_applicable: always judged
 //    nullptr},   // note: no extra clause
+// and for an enum, the air model (baseline: the constant air of World::air):
+//   {"air model (isa)", TermKind::toggle,
+//    [](const Model& m) { return m.world.air.model == AirModel::isa; },
+//    [](Model& m) { return set(m.world.air.model, AirModel::isa); },
+//    [](Model& m) { return set(m.world.air.model, AirModel::constant); }, nullptr, nullptr},
+// Toggle verdicts read "<name> matters: ...", "<name> is off but would change ...: turn it on".
 #pragma once
 
 #include "physics/studies/advisor.hpp"
