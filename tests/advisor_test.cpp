@@ -182,6 +182,23 @@ TEST(Advisor, LightBallDropNeedsDragByLandingTimeThoughItLandsWhereItWould) {
     EXPECT_NE(v.cheapest_adequate, DragModel::none);
 }
 
+TEST(Advisor, LightBallLandingTimesConvergeToTheClosedFormAtTheMethodsOrder) {
+    // The measured landing times (with and without drag) against the closed form at dt and dt/2:
+    // semi-implicit Euler is first order, so the error halves.
+    const Fall air = quadratic_fall(foam_drop, g0, quadratic_k(foam_ball)), vacuum = quadratic_fall(foam_drop, g0, 0.0);
+    auto errors = [&](double dt) {
+        Scene scene = scene_with(foam_ball, DragModel::quadratic);
+        scene.integrator.dt = dt;
+        const MetricDelta t = run_named(advise(scene, {}).variants[0], "drag").metric(AdviceMetric::landing_time);
+        return std::pair{std::abs(t.value - air.time), std::abs(t.baseline - vacuum.time)};
+    };
+    const auto [air_coarse, vacuum_coarse] = errors(2e-3);
+    const auto [air_fine, vacuum_fine] = errors(1e-3);
+    EXPECT_NEAR(std::log2(air_coarse / air_fine), 1.0, 0.1) << air_coarse << " " << air_fine;
+    EXPECT_NEAR(std::log2(vacuum_coarse / vacuum_fine), 1.0, 0.1) << vacuum_coarse << " " << vacuum_fine;
+    EXPECT_LT(air_fine, 1e-3);
+}
+
 TEST(Advisor, FeatherVsBallPresetNeedsDragInAirAndSaysSoForTheVacuumVariant) {
     const LoadResult r = load_preset(std::string(PL_SOURCE_DIR) + "/presets/feather_vs_ball.json");
     ASSERT_TRUE(r.ok()) << r.error_text();

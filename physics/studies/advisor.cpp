@@ -93,6 +93,8 @@ using Builder = bool (*)(Model&);
 
 // The distinct models the rows need, each run once: keyed by the builder that made it, or by
 // nullptr for the variant as configured (a builder that changed nothing).
+// Two different builders that make the same model run it twice (the drag toggle in a scene
+// without drag repeats the reference): correct, one run slower.
 struct RunPlan {
     std::map<Builder, Model> models;
     Builder key(const Model& variant, Builder b) {
