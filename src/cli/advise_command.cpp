@@ -188,8 +188,9 @@ void add_advise_command(CLI::App& app, int& exit_code) {
         "off (drag, buoyancy, wind) and with no, linear (Stokes), quadratic and sphere_re drag, and\n"
         "compares landing time, the first three impact speeds, time to rest, range, apex height and\n"
         "landing point. A term matters when any of them differs by more than max(its tolerance,\n"
-        "--relative-tolerance x the value without the term); the verdict names those metrics and by\n"
-        "how much, for terms the scene has off too. Also reports the Reynolds range, drag/weight,\n"
+        "--relative-tolerance x the value without the term, or with sphere_re for a drag model); the\n"
+        "verdict names those metrics and by how much (on - off; drag models: model - sphere_re), for\n"
+        "terms the scene has off too. Also reports the Reynolds range, drag/weight,\n"
         "Mach number and rho_air/rho_particle. Runs stop when every particle rests, or at --duration.");
     cmd->add_option("PRESET", o->preset, "preset JSON file (-: standard input)")->required();
     add_set_option(cmd, o->sets);
@@ -203,7 +204,7 @@ void add_advise_command(CLI::App& app, int& exit_code) {
         ->capture_default_str()
         ->check(positive_number());
     cmd->add_option("--relative-tolerance", o->advice.relative_tolerance,
-                    "also within tolerance up to this fraction of the value without the term (0: absolute only)")
+                    "also within tolerance up to this fraction of the baseline value (0: absolute only)")
         ->capture_default_str()
         ->check(non_negative_number());
     cmd->add_option("--duration", o->advice.max_duration_s, "longest simulated time to wait for rest, s")
