@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -266,6 +267,18 @@ TEST(Advisor, EachMetricHasItsOwnTolerance) {
     EXPECT_FALSE(run_named(advise(scene_with(foam_ball, DragModel::quadratic), relative).variants[0], "drag")
                      .metric(AdviceMetric::landing_time)
                      .beyond_tolerance);
+}
+
+TEST(Advisor, CancelStopsTheVariantUnderWay) {
+    Scene scene = scene_with(foam_ball, DragModel::quadratic);
+    scene.variants = {{"quadratic", quadratic_drag(), {}, {}, {}, {}}, {"again", quadratic_drag(), {}, {}, {}, {}}};
+    std::atomic<bool> cancel{false};
+    AdviceOptions o;
+    o.cancel = &cancel;
+    o.progress = [&](double) { cancel = true; };  // after the first run of the first variant
+    const Advice a = advise(scene, o);
+    EXPECT_TRUE(a.cancelled);
+    EXPECT_EQ(a.variants.size(), 1u);
 }
 
 }  // namespace

@@ -180,11 +180,11 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
         keys.emplace_back(applicable(row) ? plan.key(model, row.measured) : nullptr,
                           applicable(row) ? plan.key(model, row.baseline) : nullptr);
     std::map<Builder, RunOutcome> runs;
-    runs[reference] = observe_run(plan.models.at(reference), particles, o.max_duration_s, true);
+    runs[reference] = observe_run(plan.models.at(reference), particles, o.max_duration_s, true, o.cancel);
     for (const auto& [key, m] : plan.models)
         if (!runs.count(key)) {
             progress(static_cast<double>(runs.size()) / static_cast<double>(plan.models.size()));
-            runs[key] = observe_run(m, particles, o.max_duration_s, false);
+            runs[key] = observe_run(m, particles, o.max_duration_s, false, o.cancel);
         }
     for (const auto& [key, r] : runs) a.simulated_s = std::max(a.simulated_s, r.end_time);
 
@@ -249,6 +249,11 @@ Advice advise(const Scene& scene, const AdviceOptions& o) {
             if (o.progress) o.progress((static_cast<double>(v) + within) / static_cast<double>(variants));
         };
         advice.variants.push_back(advise_variant(model_for_variant(scene, v), particles, o, progress));
+        // Cancelled during its runs: the variant's advice is from runs cut short.
+        if (o.cancel && o.cancel->load(std::memory_order_relaxed)) {
+            advice.cancelled = true;
+            break;
+        }
     }
     if (o.progress && !advice.cancelled) o.progress(1.0);
     return advice;

@@ -66,7 +66,7 @@ struct Recorder {
 }  // namespace
 
 RunOutcome observe_run(const Model& model, const std::vector<ParticleSpec>& particles, double max_duration,
-                       bool measure_numbers) {
+                       bool measure_numbers, const std::atomic<bool>* cancel) {
     Simulation sim(model, particles);
     sim.set_threads(1);  // a hundred particles at most
     Recorder r(model, particles);
@@ -76,6 +76,7 @@ RunOutcome observe_run(const Model& model, const std::vector<ParticleSpec>& part
     const auto max_steps = static_cast<std::uint64_t>(std::ceil(max_duration / sim.dt()));
     bool all_done = n == 0;
     for (std::uint64_t k = 0; k < max_steps && !all_done; ++k) {
+        if (cancel && k % 1024 == 0 && cancel->load(std::memory_order_relaxed)) break;
         const double t0 = sim.time();
         for (std::size_t i = 0; i < n; ++i) {
             r.prev_x[i] = sim.state().position(i);

@@ -25,9 +25,10 @@ struct RunOutcome {
     double max_drag_to_weight = 0.0, max_mach = 0.0;
 };
 
-// Runs `model` until every particle rests (or is frozen) or `max_duration` has passed.
+// Runs `model` until every particle rests (or is frozen) or `max_duration` has passed, or
+// `cancel` (may be null) is set.
 RunOutcome observe_run(const Model& model, const std::vector<ParticleSpec>& particles, double max_duration,
-                       bool measure_numbers);
+                       bool measure_numbers, const std::atomic<bool>* cancel);
 
 // Every metric of `value` against `baseline` (value - baseline), with the tolerance rule of
 // AdviceTolerances; also fills the run's landing/apex maxima and `matters`.
