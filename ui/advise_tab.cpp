@@ -93,8 +93,9 @@ void draw_advise_tab(LabSession& s) {
         ImGui::ProgressBar(static_cast<float>(p.advice.progress()), ImVec2(ImGui::GetFontSize() * 8.0f, 0));
         ImGui::SameLine();
         if (ImGui::Button("Cancel##adv")) p.advice.cancel();
-    } else if (ImGui::Button("Advise")) {
-        start_advice(s, p);
+    } else {
+        if (ImGui::Button("Advise")) start_advice(s, p);
+        note_item_rect(s, "advise.run");
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Runs the scene's own trajectories with each term on and off (drag, buoyancy, wind) and each\n"
