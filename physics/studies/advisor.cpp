@@ -68,6 +68,10 @@ double AdviceTolerances::absolute(AdviceMetric m) const {
     return unit == "s" ? seconds : unit == "m/s" ? metres_per_second : metres;
 }
 
+double AdviceTolerances::limit(AdviceMetric m, double baseline) const {
+    return std::max(absolute(m), m == AdviceMetric::landing_point ? 0.0 : relative * std::abs(baseline));
+}
+
 std::optional<double> MetricDelta::relative() const {
     if (!measured || baseline == 0.0) return std::nullopt;
     return difference / std::abs(baseline);
@@ -112,8 +116,8 @@ AdviceMetric largest(const ModelRun& r, const AdviceTolerances& tol) {
     for (AdviceMetric m : advice_metrics) {
         const MetricDelta& d = r.metric(m);
         if (!d.measured) continue;
-        const double limit = std::max(tol.absolute(m), m == AdviceMetric::landing_point ? 0.0 : tol.relative * std::abs(d.baseline));
-        if (std::abs(d.difference) / limit > best_ratio) best = m, best_ratio = std::abs(d.difference) / limit;
+        const double ratio = std::abs(d.difference) / tol.limit(m, d.baseline);
+        if (ratio > best_ratio) best = m, best_ratio = ratio;
     }
     return best;
 }

@@ -47,6 +47,8 @@ struct AdviceTolerances {
     double metres_per_second = 1e-3;  // impact speeds
     double relative = 0.0;            // fraction of the baseline value; 0: absolute tolerances only
     double absolute(AdviceMetric m) const;
+    // The rule above: the largest |difference| within tolerance for a baseline value b.
+    double limit(AdviceMetric m, double baseline) const;
 };
 
 struct AdviceOptions {

@@ -142,8 +142,7 @@ Candidate candidate(AdviceMetric m, double value, double baseline, bool at_least
     c.d.difference = m == AdviceMetric::landing_point ? value : value - baseline;
     c.d.at_least = at_least;
     c.d.particle = particle;
-    const double relative = m == AdviceMetric::landing_point ? 0.0 : tol.relative * std::abs(baseline);
-    const double limit = std::max(tol.absolute(m), relative);
+    const double limit = tol.limit(m, baseline);
     c.excess = std::abs(c.d.difference) / limit;
     c.d.beyond_tolerance = std::abs(c.d.difference) > limit;
     return c;
