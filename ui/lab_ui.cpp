@@ -127,7 +127,9 @@ void draw_analysis_panel(LabSession& s) {
         draw_sweep_tab(s);
         ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Advise")) {
+    const bool advise_open = ImGui::BeginTabItem("Advise");
+    note_item_rect(s, "tab.advise");
+    if (advise_open) {
         draw_advise_tab(s);
         ImGui::EndTabItem();
     }

@@ -107,7 +107,9 @@ struct PanelState {
     const void* accuracy_experiment = nullptr;  // the experiment the study was started on
     BackgroundJob<StabilityMap> stability;
     BackgroundJob<Advice> advice;
-    double advice_tolerance_m = 1e-3;
+    double advice_tolerance_m = 1e-3;    // AdviceOptions' tolerances
+    double advice_tolerance_s = 1e-3;
+    double advice_tolerance_mps = 1e-3;
     const void* advice_experiment = nullptr;
     BackgroundJob<SweepRun> sweep;
     SweepChoices sweep_choices = [] {

@@ -1,221 +1,151 @@
 #include "physics/studies/advisor.hpp"
 
-#include "physics/stepping/contact.hpp"
-#include "physics/model/drag.hpp"
-#include "physics/stepping/energy.hpp"
-#include "physics/stepping/simulation.hpp"
+#include "physics/studies/advisor_runs.hpp"
+#include "physics/studies/advisor_terms.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <map>
+#include <numbers>
 
 namespace pl {
 
 namespace {
 
 // Advice looks at the first particles only: their trajectories represent the scene, and a
-// million-particle emitter would make five extra runs expensive.
+// million-particle emitter would make the extra runs expensive.
 constexpr std::size_t max_advice_particles = 100;
 
-std::string metres(double m) {
-    const double a = std::abs(m);
-    if (a == 0.0) return "0 m";
-    if (a < 1e-3) return fmt::format("{:.3g} um", m * 1e6);
-    if (a < 1.0) return fmt::format("{:.3g} mm", m * 1e3);
-    return fmt::format("{:.4g} m", m);
+// "+0.62 s", "-7.1 mm/s", "3.1 um": three significant digits in the unit, milli- or micro-unit.
+std::string quantity(double v, const char* unit, bool sign) {
+    const double a = std::abs(v);
+    double scale = 1.0;
+    const char* prefix = "";
+    if (a > 0.0 && a < 1e-4) scale = 1e6, prefix = "u";
+    else if (a > 0.0 && a < 0.1) scale = 1e3, prefix = "m";
+    return sign ? fmt::format("{:+.3g} {}{}", v * scale, prefix, unit) : fmt::format("{:.3g} {}{}", v * scale, prefix, unit);
 }
 
-struct Observed {
-    ModelRun run;
-    double re_min = std::numeric_limits<double>::infinity(), re_max = 0.0;
-    double max_drag_to_weight = 0.0, max_mach = 0.0;
-    std::vector<Vec3> end_position;  // where particles that never landed ended up
+}  // namespace
+
+const char* to_string(AdviceMetric m) {
+    switch (m) {
+        case AdviceMetric::landing_time: return "landing time";
+        case AdviceMetric::impact_speed: return "impact speed";
+        case AdviceMetric::time_to_rest: return "time to rest";
+        case AdviceMetric::range: return "range";
+        case AdviceMetric::apex_height: return "apex height";
+        case AdviceMetric::landing_point: return "landing point";
+    }
+    return "?";
+}
+
+const char* json_key(AdviceMetric m) {
+    switch (m) {
+        case AdviceMetric::landing_time: return "landing_time_s";
+        case AdviceMetric::impact_speed: return "impact_speed_m_s";
+        case AdviceMetric::time_to_rest: return "time_to_rest_s";
+        case AdviceMetric::range: return "range_m";
+        case AdviceMetric::apex_height: return "apex_height_m";
+        case AdviceMetric::landing_point: return "landing_point_m";
+    }
+    return "?";
+}
+
+const char* unit_of(AdviceMetric m) {
+    switch (m) {
+        case AdviceMetric::landing_time:
+        case AdviceMetric::time_to_rest: return "s";
+        case AdviceMetric::impact_speed: return "m/s";
+        default: return "m";
+    }
+}
+
+double AdviceTolerances::absolute(AdviceMetric m) const {
+    const std::string_view unit = unit_of(m);
+    return unit == "s" ? seconds : unit == "m/s" ? metres_per_second : metres;
+}
+
+double AdviceTolerances::limit(AdviceMetric m, double baseline) const {
+    return std::max(absolute(m), m == AdviceMetric::landing_point ? 0.0 : relative * std::abs(baseline));
+}
+
+std::optional<double> MetricDelta::relative() const {
+    if (!measured || baseline == 0.0) return std::nullopt;
+    return difference / std::abs(baseline);
+}
+
+std::string describe(AdviceMetric m, const MetricDelta& d) {
+    if (!d.measured) return fmt::format("{}: not reached", to_string(m));
+    if (m == AdviceMetric::landing_point)
+        return fmt::format("landing point moves {}{}", quantity(d.difference, "m", false),
+                           d.at_least ? " (lands in one run only: to its end point)" : "");
+    std::string s = fmt::format("{} {}{}", to_string(m), d.at_least ? (d.difference < 0 ? "<= " : ">= ") : "",
+                                quantity(d.difference, unit_of(m), true));
+    if (const std::optional<double> r = d.relative(); r && !d.at_least)
+        s += std::abs(*r) >= 0.1 ? fmt::format(" ({:+.0f}%)", 100.0 * *r) : fmt::format(" ({:+.2g}%)", 100.0 * *r);
+    if (d.impact > 1) s += fmt::format(" at impact {}", d.impact);
+    if (d.at_least) s += m == AdviceMetric::landing_time ? " (lands in one run only)" : " (rests in one run only)";
+    return s;
+}
+
+namespace {
+
+using Builder = bool (*)(Model&);
+
+// The distinct models the rows need, each run once: keyed by the builder that made it, or by
+// nullptr for the variant as configured (a builder that changed nothing).
+// Two different builders that make the same model run it twice (the drag toggle in a scene
+// without drag repeats the reference): correct, one run slower.
+struct RunPlan {
+    std::map<Builder, Model> models;
+    Builder key(const Model& variant, Builder b) {
+        Model m = variant;
+        if (!b(m)) b = nullptr;
+        models.try_emplace(b, b ? m : variant);
+        return b;
+    }
 };
 
-// Runs `model` until every particle has hit a floor wall (one that gravity presses toward) or
-// the time limit; records landing points, apex heights and the dimensionless numbers.
-Observed observe(const Model& model, const std::vector<ParticleSpec>& particles, double max_duration,
-                 bool measure_numbers) {
-    Observed o;
-    o.run.model = model.drag.model;
-    o.run.with_wind = model.world.wind.kind != WindKind::none;
-    const std::size_t n = particles.size();
-    o.run.landing.assign(n, std::nullopt);
-    o.run.landing_time.assign(n, 0.0);
-    o.run.apex_height.assign(n, 0.0);
-    std::uint8_t floor_mask = 0;
-    for (int w = 0; w < wall_count; ++w)
-        if (glm::dot(model.world.gravity, RoomBounds::inward_normal(w)) < 0.0) floor_mask |= static_cast<std::uint8_t>(1u << w);
-    const double floor_y = model.room.floor_y();
-    const double g = glm::length(model.world.gravity);
-
-    Simulation sim(model, particles);
-    sim.set_threads(1);  // at most max_advice_particles
-    std::vector<Vec3> prev_x(n), prev_v(n);
-    std::size_t landed = 0;
-    for (std::size_t i = 0; i < n; ++i) o.run.apex_height[i] = particles[i].position.y - floor_y;
-    const auto max_steps = static_cast<std::uint64_t>(std::ceil(max_duration / sim.dt()));
-    for (std::uint64_t k = 0; k < max_steps && landed < n; ++k) {
-        const double t0 = sim.time();
-        for (std::size_t i = 0; i < n; ++i) {
-            prev_x[i] = sim.state().position(i);
-            prev_v[i] = sim.state().velocity(i);
-            if (!measure_numbers || o.run.landing[i] || sim.state().frozen[i]) continue;
-            const Vec3 u = prev_v[i] - sim.wind().at(prev_x[i], t0);
-            o.max_mach = std::max(o.max_mach, glm::length(u) / speed_of_sound_mps);
-            if (g > 0.0)
-                o.max_drag_to_weight =
-                    std::max(o.max_drag_to_weight, glm::length(sim.acceleration(i) - model.world.gravity) / g);
-        }
-        sim.step();
-        for (const Event& e : sim.drain_events()) {
-            const std::size_t i = e.particle;
-            if (o.run.landing[i] || e.wall < 0 || !(floor_mask & (1u << e.wall))) continue;
-            if (e.kind != EventKind::bounce && e.kind != EventKind::rest) continue;
-            // Linear extrapolation of the state before the step to the impact time (the impact
-            // wall's coordinate is exact: the sphere touches it).
-            Vec3 at = prev_x[i] + (e.t - t0) * prev_v[i];
-            at[RoomBounds::axis(e.wall)] = RoomBounds(model.room).contact_plane(e.wall, particles[i].radius);
-            o.run.landing[i] = at;
-            o.run.landing_time[i] = e.t;
-            ++landed;
-        }
-        for (std::size_t i = 0; i < n; ++i)
-            if (!o.run.landing[i]) o.run.apex_height[i] = std::max(o.run.apex_height[i], sim.state().y[i] - floor_y);
+// Largest metric relative to its tolerance (for "nothing beyond tolerance (largest: ...)").
+AdviceMetric largest(const ModelRun& r, const AdviceTolerances& tol) {
+    AdviceMetric best = AdviceMetric::landing_point;
+    double best_ratio = -1.0;
+    for (AdviceMetric m : advice_metrics) {
+        const MetricDelta& d = r.metric(m);
+        if (!d.measured) continue;
+        const double ratio = std::abs(d.difference) / tol.limit(m, d.baseline);
+        if (ratio > best_ratio) best = m, best_ratio = ratio;
     }
-    if (measure_numbers && model.drag.model != DragModel::none) {
-        const ReRange seen = sim.observed_reynolds();
-        if (seen.hi > 0.0) {
-            o.re_min = std::min(o.re_min, seen.lo);
-            o.re_max = std::max(o.re_max, seen.hi);
-        }
-    }
-    o.end_position.resize(n);
-    for (std::size_t i = 0; i < n; ++i) o.end_position[i] = sim.state().position(i);
-    return o;
+    return best;
 }
 
-// Landing point, or the final position of a particle that never landed.
-Vec3 outcome_point(const Observed& o, std::size_t i) { return o.run.landing[i] ? *o.run.landing[i] : o.end_position[i]; }
-
-void set_differences(Observed& o, const Observed& ref) {
-    for (std::size_t i = 0; i < o.run.landing.size(); ++i) {
-        o.run.landing_difference_m =
-            std::max(o.run.landing_difference_m, glm::length(outcome_point(o, i) - outcome_point(ref, i)));
-        o.run.apex_difference_m =
-            std::max(o.run.apex_difference_m, std::abs(o.run.apex_height[i] - ref.run.apex_height[i]));
-    }
+std::string beyond_list(const ModelRun& r) {
+    std::string s;
+    for (AdviceMetric m : advice_metrics)
+        if (r.metric(m).beyond_tolerance) s += (s.empty() ? "" : ", ") + describe(m, r.metric(m));
+    return s;
 }
 
-double effect(const ModelRun& r) { return std::max(r.landing_difference_m, r.apex_difference_m); }
-
-// The candidate drag models: the variant's own settings for its own model, defaults otherwise
-// (Stokes from the air's viscosity for linear; Cd = 0.47 for quadratic unless configured).
-DragSettings candidate(DragModel model, const DragSettings& configured) {
-    if (model == configured.model) return configured;
-    DragSettings d;
-    d.model = model;
-    if (configured.model == DragModel::quadratic) d.cd = configured.cd;
-    return d;
+std::string verdict(const TermRow& row, const ModelRun& r, const std::string& note, const AdviceTolerances& tol) {
+    if (!r.not_applicable.empty()) return fmt::format("{}: {}", row.name, r.not_applicable);
+    const std::string extra = note.empty() ? "" : "; " + note;
+    const std::string most = fmt::format("(largest: {})", describe(largest(r, tol), r.metric(largest(r, tol))));
+    if (row.kind == TermKind::alternative)
+        return r.matters ? fmt::format("{} differs from {} drag: {}{}: not enough here", row.name, to_string(reference_drag),
+                                       beyond_list(r), extra)
+                         : fmt::format("{} is within tolerance of {} drag {}{}: enough here", row.name,
+                                       to_string(reference_drag), most, extra);
+    if (r.in_scene)
+        return r.matters ? fmt::format("{} matters: {}{}", row.name, beyond_list(r), extra)
+                         : fmt::format("{} changes nothing beyond tolerance {}{}: it could be turned off", row.name, most, extra);
+    return r.matters ? fmt::format("{} is off but would change {}{}: turn it on", row.name, beyond_list(r), extra)
+                     : fmt::format("{} is off and would change nothing beyond tolerance {}{}", row.name, most, extra);
 }
 
-VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>& particles, const AdviceOptions& o,
-                             const std::function<void()>& tick) {
-    VariantAdvice a;
-    a.label = model.label;
-    a.configured = model.drag.model;
-    a.wind = model.world.wind.kind;
-    const double tol = o.tolerance_m;
-
-    std::vector<Observed> runs;
-    for (DragModel d : {DragModel::none, DragModel::linear, DragModel::quadratic, DragModel::sphere_re}) {
-        Model m = model;
-        m.drag = candidate(d, model.drag);
-        runs.push_back(observe(m, particles, o.max_duration_s, d == DragModel::sphere_re));
-        tick();
-    }
-    const Observed& ref = runs.back();
-    for (Observed& r : runs) set_differences(r, ref);
-    a.re_min = std::isfinite(ref.re_min) ? ref.re_min : 0.0;
-    a.re_max = ref.re_max;
-    a.max_drag_to_weight = ref.max_drag_to_weight;
-    a.max_mach = ref.max_mach;
-    a.stokes_error_factor = sphere_cd_times_re(a.re_max) / 24.0;
-
-    std::optional<Observed> without_wind;
-    if (model.world.wind.kind != WindKind::none && model.drag.model != DragModel::none) {
-        Model m = model;
-        m.world.wind.kind = WindKind::none;
-        Model with = model;
-        Observed calm = observe(m, particles, o.max_duration_s, false);
-        const Observed windy = observe(with, particles, o.max_duration_s, false);
-        set_differences(calm, windy);
-        without_wind = calm;
-    }
-    tick();
-
-    for (const Observed& r : runs) a.runs.push_back(r.run);
-    a.cheapest_adequate = DragModel::sphere_re;
-    for (const Observed& r : runs)
-        if (effect(r.run) <= tol) {
-            a.cheapest_adequate = r.run.model;
-            break;
-        }
-
-    const std::string tol_text = metres(tol);
-    const ModelRun& none = runs[0].run;
-    const ModelRun& linear = runs[1].run;
-    const ModelRun& quadratic = runs[2].run;
-    const bool landed = std::all_of(ref.run.landing.begin(), ref.run.landing.end(), [](const auto& l) { return l.has_value(); });
-    const std::string where = landed ? "the landing point" : fmt::format("the position after {:g} s", o.max_duration_s);
-
-    // Drag as a whole: 'none' against the richest model.
-    if (effect(none) <= tol)
-        a.verdicts.push_back(fmt::format("drag changes {} by {} and the apex by {}: model 'none' is enough at {} tolerance",
-                                         where, metres(none.landing_difference_m), metres(none.apex_difference_m), tol_text));
-    else
-        a.verdicts.push_back(fmt::format("drag changes {} by {} and the apex by {}: drag is needed at {} tolerance "
-                                         "(max drag/weight = {:.3g})",
-                                         where, metres(none.landing_difference_m), metres(none.apex_difference_m), tol_text,
-                                         a.max_drag_to_weight));
-    // Linear (Stokes) drag.
-    if (a.re_max > 1.0 && effect(linear) > tol)
-        a.verdicts.push_back(fmt::format("Re = {:.2g}: linear drag is wrong here by {:.0f}x (it moves {} by {} against "
-                                         "sphere_re), use quadratic or sphere_re",
-                                         a.re_max, a.stokes_error_factor, where, metres(linear.landing_difference_m)));
-    else if (a.re_max > 1.0)
-        a.verdicts.push_back(fmt::format("Re = {:.2g}: linear drag is wrong here by {:.0f}x in force, but it changes {} by only "
-                                         "{} against sphere_re: enough at {} tolerance",
-                                         a.re_max, a.stokes_error_factor, where, metres(effect(linear)), tol_text));
-    else
-        a.verdicts.push_back(fmt::format("Re <= {:.2g}: Stokes flow, linear drag is within {} of sphere_re{}", a.re_max,
-                                         metres(effect(linear)), effect(linear) <= tol ? " (enough)" : " (not enough)"));
-    // Quadratic (constant Cd) drag.
-    if (effect(quadratic) <= tol)
-        a.verdicts.push_back(fmt::format("quadratic drag (Cd = {:g}) is within {} of sphere_re: enough at {} tolerance",
-                                         candidate(DragModel::quadratic, model.drag).cd, metres(effect(quadratic)), tol_text));
-    else
-        a.verdicts.push_back(fmt::format("quadratic drag (Cd = {:g}) differs from sphere_re by {} over Re = {:.2g} .. {:.2g}: "
-                                         "use sphere_re",
-                                         candidate(DragModel::quadratic, model.drag).cd, metres(effect(quadratic)),
-                                         a.re_min, a.re_max));
-    // Wind.
-    if (model.world.wind.kind == WindKind::none)
-        a.verdicts.push_back("no wind in this scene");
-    else if (model.drag.model == DragModel::none)
-        a.verdicts.push_back("drag is off, so wind has no effect");
-    else if (without_wind) {
-        const double d = effect(without_wind->run);
-        a.verdicts.push_back(fmt::format("wind ({}) moves {} by {}: {} at {} tolerance", to_string(model.world.wind.kind),
-                                         where, metres(d), d <= tol ? "negligible" : "needed", tol_text));
-        a.runs.push_back(without_wind->run);
-    }
-    // Summary against what the variant uses.
-    a.verdicts.push_back(fmt::format("cheapest drag model within {} of sphere_re: '{}'; this variant uses '{}'", tol_text,
-                                     to_string(a.cheapest_adequate), to_string(model.drag.model)));
-
+void add_warnings(const Model& model, VariantAdvice& a) {
     if (a.max_mach > 0.3)
         a.warnings.push_back(fmt::format("Mach {:.2f}: compressibility is not modelled (unreliable above Mach 0.3)", a.max_mach));
     if (model.drag.model != DragModel::none) {
@@ -224,6 +154,80 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
             a.warnings.push_back(fmt::format("Re = {:.2g} .. {:.2g} leaves the {} model's validity range {:.3g} < Re < {:.3g}",
                                              a.re_min, a.re_max, to_string(model.drag.model), valid.lo, valid.hi));
     }
+}
+
+// rho_air / rho_particle, rho_particle = m / (4/3 pi R^3).
+std::vector<double> density_ratios(const Model& model, const std::vector<ParticleSpec>& particles) {
+    std::vector<double> r;
+    for (const ParticleSpec& p : particles)
+        r.push_back(model.world.air.density_kg_m3 * (4.0 / 3.0) * std::numbers::pi * p.radius * p.radius * p.radius / p.mass);
+    return r;
+}
+
+VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>& particles, const AdviceOptions& o,
+                             const std::function<void(double)>& progress) {
+    VariantAdvice a;
+    a.label = model.label;
+    a.configured = model.drag.model;
+    a.wind = model.world.wind.kind;
+    a.buoyancy = model.world.buoyancy;
+    a.density_ratio = density_ratios(model, particles);
+    const AdviceTolerances tol = o.tolerances();
+
+    RunPlan plan;
+    plan.models.try_emplace(nullptr, model);  // the variant as configured
+    const Builder reference = plan.key(model, use_reference_drag);
+    // Rows that cannot be judged here (wind in a calm scene) need no runs.
+    auto applicable = [&](const TermRow& row) { return !row.not_applicable || !row.not_applicable(model); };
+    std::vector<std::pair<Builder, Builder>> keys;
+    for (const TermRow& row : term_table())
+        keys.emplace_back(applicable(row) ? plan.key(model, row.measured) : nullptr,
+                          applicable(row) ? plan.key(model, row.baseline) : nullptr);
+    std::map<Builder, RunOutcome> runs;
+    runs[reference] = observe_run(plan.models.at(reference), particles, o.max_duration_s, true, o.cancel);
+    for (const auto& [key, m] : plan.models)
+        if (!runs.count(key)) {
+            progress(static_cast<double>(runs.size()) / static_cast<double>(plan.models.size()));
+            runs[key] = observe_run(m, particles, o.max_duration_s, false, o.cancel);
+        }
+    for (const auto& [key, r] : runs) a.simulated_s = std::max(a.simulated_s, r.end_time);
+
+    const RunOutcome& ref = runs.at(reference);
+    a.re_min = std::isfinite(ref.re_min) ? ref.re_min : 0.0;
+    a.re_max = ref.re_max;
+    a.max_drag_to_weight = ref.max_drag_to_weight;
+    a.max_mach = ref.max_mach;
+    a.stokes_error_factor = sphere_cd_times_re(a.re_max) / 24.0;
+
+    const std::span<const TermRow> table = term_table();
+    for (std::size_t k = 0; k < table.size(); ++k) {
+        const TermRow& row = table[k];
+        ModelRun r;
+        r.term = row.name;
+        r.alternative = row.kind == TermKind::alternative;
+        r.in_scene = row.in_scene(model);
+        const Model& simpler = plan.models.at(row.kind == TermKind::toggle ? keys[k].second : keys[k].first);
+        r.model = simpler.drag.model;
+        r.with_wind = simpler.world.wind.kind != WindKind::none;
+        r.buoyancy = simpler.world.buoyancy;
+        if (const char* why = row.not_applicable ? row.not_applicable(model) : nullptr) r.not_applicable = why;
+        else compare_runs(runs.at(keys[k].first), runs.at(keys[k].second), tol, r);
+        a.runs.push_back(r);
+    }
+    for (std::size_t k = 0; k < table.size(); ++k)
+        if (table[k].verdict)
+            a.verdicts.push_back(verdict(table[k], a.runs[k],
+                                         table[k].note ? table[k].note({model, a, a.runs[k]}) : std::string(), tol));
+
+    // The cheapest drag model whose run stays within tolerance of the reference on every metric.
+    for (const ModelRun& r : a.runs)
+        if (r.alternative && !r.matters && r.not_applicable.empty()) {
+            a.cheapest_adequate = r.model;
+            break;
+        }
+    a.verdicts.push_back(fmt::format("cheapest drag model within tolerance of {}: '{}'; this variant uses '{}'",
+                                     to_string(reference_drag), to_string(a.cheapest_adequate), to_string(model.drag.model)));
+    add_warnings(model, a);
     return a;
 }
 
@@ -232,24 +236,30 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
 Advice advise(const Scene& scene, const AdviceOptions& o) {
     Advice advice;
     advice.tolerance_m = o.tolerance_m;
+    advice.tolerances = o.tolerances();
+    advice.max_duration_s = o.max_duration_s;
     std::vector<ParticleSpec> particles = initial_particles(scene);
     advice.particles_total = particles.size();
     if (particles.size() > max_advice_particles) particles.resize(max_advice_particles);
     advice.particles_used = particles.size();
     const std::size_t variants = variant_count(scene);
-    std::size_t done = 0;
-    const std::size_t total = variants * 5;
-    auto tick = [&] {
-        ++done;
-        if (o.progress) o.progress(static_cast<double>(done) / static_cast<double>(total));
-    };
     for (std::size_t v = 0; v < variants; ++v) {
         if (o.cancel && o.cancel->load(std::memory_order_relaxed)) {
             advice.cancelled = true;
             break;
         }
-        advice.variants.push_back(advise_variant(model_for_variant(scene, v), particles, o, tick));
+        // Progress: this variant's share of the variants, by its runs done.
+        auto progress = [&](double within) {
+            if (o.progress) o.progress((static_cast<double>(v) + within) / static_cast<double>(variants));
+        };
+        advice.variants.push_back(advise_variant(model_for_variant(scene, v), particles, o, progress));
+        // Cancelled during its runs: the variant's advice is from runs cut short.
+        if (o.cancel && o.cancel->load(std::memory_order_relaxed)) {
+            advice.cancelled = true;
+            break;
+        }
     }
+    if (o.progress && !advice.cancelled) o.progress(1.0);
     return advice;
 }
 

@@ -137,6 +137,21 @@ nlohmann::json measure_json(const ui::LabSession& s, const ViewSnapshot& view) {
 }
 
 // The file dialog while it shows (null otherwise): mode, folder, filename, the overwrite question.
+// The Advise tab's last result: per variant its verdicts and the terms that matter.
+nlohmann::json advice_json(const ui::LabSession& s) {
+    nlohmann::json j = {{"running", false}, {"variants", nlohmann::json::array()}};
+    if (!s.panels) return j;
+    j["running"] = s.panels->advice.running();
+    if (!s.panels->advice.result()) return j;
+    for (const VariantAdvice& v : s.panels->advice.result()->variants) {
+        nlohmann::json matters = nlohmann::json::array();
+        for (const ModelRun& r : v.runs)
+            if (r.matters) matters.push_back(r.term);
+        j["variants"].push_back({{"verdicts", v.verdicts}, {"matters", matters}});
+    }
+    return j;
+}
+
 nlohmann::json file_dialog_json(const ui::LabSession& s) {
     if (!s.panels || !s.panels->file_dialog.visible) return nullptr;
     const ui::FileDialog& d = s.panels->file_dialog;
@@ -229,6 +244,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     nlohmann::json best = nlohmann::json::array();
     for (const auto& [label, x] : sweep.best) best.push_back({{"series", label}, {"x", x}});
     j["sweep"] = {{"running", sweep.running}, {"points", sweep.points}, {"done", sweep.done}, {"best", best}};
+    j["advice"] = advice_json(s);
     j["t"] = s.experiment ? s.experiment->time() : 0.0;
     j["base_steps"] = s.experiment ? s.experiment->base_steps() : 0;
     nlohmann::json variants = nlohmann::json::array();

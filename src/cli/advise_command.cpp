@@ -8,6 +8,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -18,18 +21,73 @@ namespace {
 struct AdviseCliOptions {
     std::string preset;
     std::vector<std::string> sets;  // --set KEY=VALUE
-    double tolerance_m = 1e-3;
-    double max_duration_s = 20.0;
+    AdviceOptions advice;
     bool json = false, csv = false;
 };
 
 using Json = nlohmann::ordered_json;
+
+// --relative-tolerance: 0 (absolute tolerances only) or more.
+CLI::Validator non_negative_number() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            double v = 0.0;
+            const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+            if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v) || v < 0.0)
+                return fmt::format("must be a number >= 0, got '{}'", text);
+            return "";
+        },
+        "NUMBER>=0");
+}
+
+Json optional_number(bool present, double value) { return present ? Json(value) : Json(nullptr); }
+
+// Every metric of one comparison; the same keys in every run, null where not measured, so that
+// --csv has one column per key.
+Json metrics_json(const ModelRun& r) {
+    Json metrics;
+    for (AdviceMetric m : advice_metrics) {
+        const MetricDelta& d = r.metric(m);
+        Json x;
+        x["difference"] = optional_number(d.measured, d.difference);
+        x["value"] = optional_number(d.measured, d.value);
+        x["baseline"] = optional_number(d.measured, d.baseline);
+        const std::optional<double> rel = d.relative();
+        x["relative"] = optional_number(rel.has_value(), rel.value_or(0.0));
+        x["beyond_tolerance"] = d.beyond_tolerance;
+        x["at_least"] = d.at_least;
+        x["particle"] = d.measured ? Json(d.particle) : Json(nullptr);
+        x["impact"] = m == AdviceMetric::impact_speed && d.measured ? Json(d.impact) : Json(nullptr);
+        metrics[json_key(m)] = x;
+    }
+    return metrics;
+}
+
+Json run_json(const ModelRun& r) {
+    Json jr;
+    jr["drag"] = to_string(r.model);
+    jr["with_wind"] = r.with_wind;
+    jr["landing_difference_m"] = r.landing_difference_m;
+    jr["apex_difference_m"] = r.apex_difference_m;
+    jr["term"] = r.term;
+    jr["kind"] = r.alternative ? "alternative" : "toggle";
+    jr["in_scene"] = r.in_scene;
+    jr["buoyancy"] = r.buoyancy;
+    jr["not_applicable"] = r.not_applicable.empty() ? Json(nullptr) : Json(r.not_applicable);
+    jr["matters"] = r.matters;
+    jr["metrics"] = metrics_json(r);
+    return jr;
+}
 
 // The --json document; --csv writes its "variants" with one row per model run (io/json_csv.hpp).
 Json advice_json(const Scene& scene, const Advice& a) {
     Json j = json_document();
     j["preset"] = scene.name;
     j["tolerance_m"] = a.tolerance_m;
+    j["tolerance_s"] = a.tolerances.seconds;
+    j["tolerance_m_s"] = a.tolerances.metres_per_second;
+    j["relative_tolerance"] = a.tolerances.relative;
+    j["max_duration_s"] = a.max_duration_s;
     j["particles_used"] = a.particles_used;
     j["particles_total"] = a.particles_total;
     Json variants = Json::array();
@@ -40,21 +98,17 @@ Json advice_json(const Scene& scene, const Advice& a) {
         x["variant_index"] = v;
         x["drag"] = to_string(va.configured);
         x["wind"] = to_string(va.wind);
+        x["buoyancy"] = va.buoyancy;
         x["reynolds_min"] = va.re_min;
         x["reynolds_max"] = va.re_max;
         x["max_drag_to_weight"] = va.max_drag_to_weight;
         x["max_mach"] = va.max_mach;
         x["stokes_error_factor"] = va.stokes_error_factor;
         x["cheapest_adequate_drag"] = to_string(va.cheapest_adequate);
+        x["simulated_s"] = va.simulated_s;
+        x["density_ratio"] = va.density_ratio;
         Json runs = Json::array();
-        for (const ModelRun& r : va.runs) {
-            Json jr;
-            jr["drag"] = to_string(r.model);
-            jr["with_wind"] = r.with_wind;
-            jr["landing_difference_m"] = r.landing_difference_m;
-            jr["apex_difference_m"] = r.apex_difference_m;
-            runs.push_back(jr);
-        }
+        for (const ModelRun& r : va.runs) runs.push_back(run_json(r));
         x["runs"] = runs;
         x["verdicts"] = va.verdicts;
         x["warnings"] = va.warnings;
@@ -64,12 +118,40 @@ Json advice_json(const Scene& scene, const Advice& a) {
     return j;
 }
 
+// A table cell: the difference in the metric's unit, ">=" for a bound, "*" beyond tolerance.
+std::string cell(const MetricDelta& d) {
+    if (!d.measured) return "-";
+    return std::string(d.at_least ? (d.difference < 0 ? "<=" : ">=") : "") + sig(d.difference, 3) +
+           (d.beyond_tolerance ? "*" : "");
+}
+
+void print_variant(const Scene& scene, std::size_t v, const VariantAdvice& va) {
+    std::printf("\nvariant %s  (drag %s, wind %s, buoyancy %s)\n", variant_name(scene, v).c_str(), to_string(va.configured),
+                to_string(va.wind), va.buoyancy ? "on" : "off");
+    std::printf("  Reynolds %s .. %s, max drag/weight %s, max Mach %s, rho_air/rho_particle up to %s\n",
+                sig(va.re_min, 3).c_str(), sig(va.re_max, 3).c_str(), sig(va.max_drag_to_weight, 3).c_str(),
+                sig(va.max_mach, 3).c_str(),
+                sig(va.density_ratio.empty() ? 0.0 : *std::max_element(va.density_ratio.begin(), va.density_ratio.end()), 3)
+                    .c_str());
+    Table t;
+    t.header = {"  term", "in scene"};
+    for (AdviceMetric m : advice_metrics) t.header.push_back(fmt::format("{} {}", to_string(m), unit_of(m)));
+    t.header.push_back("matters");
+    for (const ModelRun& r : va.runs) {
+        std::vector<std::string> row = {"  " + r.term, r.in_scene ? "yes" : "no"};
+        for (AdviceMetric m : advice_metrics) row.push_back(r.not_applicable.empty() ? cell(r.metric(m)) : "n/a");
+        row.push_back(!r.not_applicable.empty() ? "n/a" : r.matters ? "yes" : "no");
+        t.rows.push_back(row);
+    }
+    t.print();
+    for (const std::string& s : va.verdicts) std::printf("  - %s\n", s.c_str());
+    for (const std::string& s : va.warnings) std::printf("  warning: %s\n", s.c_str());
+}
+
 int advise_command(const AdviseCliOptions& o) {
     const std::optional<Scene> scene = load_scene("advise", o.preset, o.sets);
     if (!scene) return exit_bad_input;
-    AdviceOptions options;
-    options.tolerance_m = o.tolerance_m;
-    options.max_duration_s = o.max_duration_s;
+    AdviceOptions options = o.advice;
     Progress progress("advise");
     options.progress = [&](double f) { progress.update(f); };
     const Advice a = advise(*scene, options);
@@ -82,25 +164,17 @@ int advise_command(const AdviseCliOptions& o) {
         return exit_ok;
     }
 
-    std::printf("%s: advice at %s mm tolerance, from running each drag model against sphere_re (the richest)\n",
-                scene->name.c_str(), sig(a.tolerance_m * 1e3, 3).c_str());
+    const AdviceTolerances& tol = a.tolerances;
+    std::printf("%s: which terms matter, from running each term on and off (and each drag model against sphere_re)\n"
+                "tolerances: %s mm, %s ms, %s mm/s%s; runs end when all particles rest, or at %s s\n"
+                "table: the term's effect, on - off (drag models: model - sphere_re); * beyond tolerance\n",
+                scene->name.c_str(), sig(tol.metres * 1e3, 3).c_str(), sig(tol.seconds * 1e3, 3).c_str(),
+                sig(tol.metres_per_second * 1e3, 3).c_str(),
+                tol.relative > 0.0 ? fmt::format(" or {}% of the value", sig(tol.relative * 100.0, 3)).c_str() : "",
+                sig(a.max_duration_s, 3).c_str());
     if (a.particles_used < a.particles_total)
         std::printf("(from the first %zu of %zu particles)\n", a.particles_used, a.particles_total);
-    for (std::size_t v = 0; v < a.variants.size(); ++v) {
-        const VariantAdvice& va = a.variants[v];
-        std::printf("\nvariant %s  (drag %s, wind %s)\n", variant_name(*scene, v).c_str(), to_string(va.configured),
-                    to_string(va.wind));
-        std::printf("  Reynolds %s .. %s, max drag/weight %s, max Mach %s\n", sig(va.re_min, 3).c_str(),
-                    sig(va.re_max, 3).c_str(), sig(va.max_drag_to_weight, 3).c_str(), sig(va.max_mach, 3).c_str());
-        Table t;
-        t.header = {"  model", "landing/position diff m", "apex diff m"};
-        for (const ModelRun& r : va.runs)
-            t.rows.push_back({"  " + std::string(to_string(r.model)) + (r.with_wind || va.wind == WindKind::none ? "" : " (no wind)"),
-                              sig(r.landing_difference_m, 3), sig(r.apex_difference_m, 3)});
-        t.print();
-        for (const std::string& s : va.verdicts) std::printf("  - %s\n", s.c_str());
-        for (const std::string& s : va.warnings) std::printf("  warning: %s\n", s.c_str());
-    }
+    for (std::size_t v = 0; v < a.variants.size(); ++v) print_variant(*scene, v, a.variants[v]);
     return exit_ok;
 }
 
@@ -110,16 +184,30 @@ void add_advise_command(CLI::App& app, int& exit_code) {
     auto o = std::make_shared<AdviseCliOptions>();
     CLI::App* cmd = app.add_subcommand("advise", "which force terms this scene needs, and why");
     cmd->footer(
-        "Which force terms does this scene need? Runs each variant's trajectories with no drag, linear\n"
-        "(Stokes), quadratic and sphere_re drag (and without wind) and reports the Reynolds range,\n"
-        "drag/weight ratio, Mach number and, per term, how much it moves the landing point and apex,\n"
-        "with a verdict at --tolerance.");
+        "Which force terms does this scene need? Runs each variant's trajectories with each term on and\n"
+        "off (drag, buoyancy, wind) and with no, linear (Stokes), quadratic and sphere_re drag, and\n"
+        "compares landing time, the first three impact speeds, time to rest, range, apex height and\n"
+        "landing point. A term matters when any of them differs by more than max(its tolerance,\n"
+        "--relative-tolerance x the value without the term, or with sphere_re for a drag model); the\n"
+        "verdict names those metrics and by how much (on - off; drag models: model - sphere_re), for\n"
+        "terms the scene has off too. Also reports the Reynolds range, drag/weight,\n"
+        "Mach number and rho_air/rho_particle. Runs stop when every particle rests, or at --duration.");
     cmd->add_option("PRESET", o->preset, "preset JSON file (-: standard input)")->required();
     add_set_option(cmd, o->sets);
-    cmd->add_option("--tolerance", o->tolerance_m, "landing/apex tolerance in metres")
+    cmd->add_option("--tolerance", o->advice.tolerance_m, "tolerance of range, apex and landing point, m")
         ->capture_default_str()
         ->check(positive_number());
-    cmd->add_option("--duration", o->max_duration_s, "longest simulated time to wait for landing, s")
+    cmd->add_option("--time-tolerance", o->advice.tolerance_s, "tolerance of landing time and time to rest, s")
+        ->capture_default_str()
+        ->check(positive_number());
+    cmd->add_option("--speed-tolerance", o->advice.tolerance_mps, "tolerance of impact speeds, m/s")
+        ->capture_default_str()
+        ->check(positive_number());
+    cmd->add_option("--relative-tolerance", o->advice.relative_tolerance,
+                    "also within tolerance up to this fraction of the baseline value (0: absolute only)")
+        ->capture_default_str()
+        ->check(non_negative_number());
+    cmd->add_option("--duration", o->advice.max_duration_s, "longest simulated time to wait for rest, s")
         ->capture_default_str()
         ->check(positive_number());
     auto* json = cmd->add_flag("--json", o->json, "print JSON");

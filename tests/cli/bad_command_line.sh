@@ -27,6 +27,9 @@ expect 2 "--methods: unknown method 'rk5'" accuracy "$preset" --methods rk4,rk5
 expect 2 "--dt: expected a comma-separated list" accuracy "$preset" --dt 0.01,x
 expect 2 "--baseline: no variant" compare "$src/presets/drag_models.json" --baseline nope
 expect 2 "--tolerance: must be a number > 0" advise "$preset" --tolerance 0
+expect 2 "--time-tolerance: must be a number > 0" advise "$preset" --time-tolerance 0
+expect 2 "--speed-tolerance: must be a number > 0, got 'x'" advise "$preset" --speed-tolerance x
+expect 2 "--relative-tolerance: must be a number >= 0, got '-0.1'" advise "$preset" --relative-tolerance -0.1
 expect 2 "--csv excludes --json" accuracy "$preset" --csv --json
 expect 2 "--threads" bench --threads two
 expect 1 "--out: cannot open" run "$preset" --duration 0.01 --out "$tmp/no/such/dir/traj.csv"

@@ -42,4 +42,26 @@ assert [r["drag"] for r in v["runs"]][:4] == ["none", "linear", "quadratic", "sp
 assert v["reynolds_max"] > 1e3 and any("linear drag is wrong here" in s for s in v["verdicts"]), v["verdicts"]
 PY
 
+# A vertical drop: judged by landing time and impact speed, for drag (on in the air variant, off
+# in the vacuum one) and for buoyancy (off in both: the foam ball is 0.64 of the air's density).
+"$bin" advise "$src/presets/feather_vs_ball.json" --json > "$tmp/feather.json"
+python3 - "$tmp/feather.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["tolerance_s"] == 1e-3 and d["tolerance_m_s"] == 1e-3 and d["relative_tolerance"] == 0, d
+air, vacuum = d["variants"]
+runs = {r["term"]: r for r in air["runs"]}
+drag = runs["drag"]
+assert drag["in_scene"] and drag["matters"], drag
+lt = drag["metrics"]["landing_time_s"]
+assert lt["beyond_tolerance"] and lt["difference"] > 1.0 and lt["particle"] == 0, lt
+assert drag["metrics"]["landing_point_m"]["difference"] < 1e-6, drag  # straight down either way
+assert air["cheapest_adequate_drag"] != "none"
+assert any(s.startswith("drag matters: landing time +") for s in air["verdicts"]), air["verdicts"]
+assert any(s.startswith("drag is off but would change landing time +") for s in vacuum["verdicts"]), vacuum["verdicts"]
+b = runs["buoyancy"]
+assert not b["in_scene"] and b["matters"] and abs(air["density_ratio"][0] - 0.641) < 1e-3, (b, air["density_ratio"])
+assert any(s.startswith("buoyancy is off but would change") and "rho_air/rho_particle = 0.641" in s for s in air["verdicts"])
+PY
+
 echo ok

@@ -1,0 +1,94 @@
+#include "physics/studies/advisor_terms.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
+namespace pl {
+
+DragSettings candidate_drag(DragModel model, const DragSettings& configured) {
+    if (model == configured.model) return configured;
+    DragSettings d;
+    d.model = model;
+    if (configured.model == DragModel::quadratic) d.cd = configured.cd;
+    // Magnus lift is a term of its own: every drag candidate keeps it as configured.
+    d.lift = configured.lift;
+    d.spin_decay_s = configured.spin_decay_s;
+    return d;
+}
+
+namespace {
+
+template <DragModel D>
+bool use_drag(Model& m) {
+    if (m.drag.model == D) return false;
+    m.drag = candidate_drag(D, m.drag);
+    return true;
+}
+
+bool as_configured(Model&) { return false; }
+
+// Drag on: the variant's own drag model, or the reference when it has none.
+bool drag_on(Model& m) { return m.drag.model == DragModel::none && use_reference_drag(m); }
+
+const char* wind_not_applicable(const Model& m) {
+    if (m.world.wind.kind == WindKind::none) return "no wind in this scene";
+    if (m.drag.model == DragModel::none) return "drag is off, so wind has no effect";
+    return nullptr;
+}
+
+std::string drag_note(const TermContext& c) { return fmt::format("max drag/weight = {:.3g}", c.advice.max_drag_to_weight); }
+
+std::string linear_note(const TermContext& c) {
+    const VariantAdvice& a = c.advice;
+    if (a.re_max <= 1.0) return fmt::format("Re <= {:.2g}: Stokes flow", a.re_max);
+    return fmt::format("Re up to {:.2g}: linear drag is wrong here by {:.0f}x in force", a.re_max, a.stokes_error_factor);
+}
+
+std::string quadratic_note(const TermContext& c) {
+    return fmt::format("Cd = {:g}, Re = {:.2g} .. {:.2g}", candidate_drag(DragModel::quadratic, c.variant.drag).cd,
+                       c.advice.re_min, c.advice.re_max);
+}
+
+// Archimedes: the buoyant force is rho_air / rho_particle of the weight, per particle.
+std::string buoyancy_note(const TermContext& c) {
+    const std::vector<double>& r = c.advice.density_ratio;
+    if (r.empty()) return {};
+    const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+    std::string ratio = fmt::format("rho_air/rho_particle = {:.3g} (particle {})", *hi, hi - r.begin());
+    if (*lo != *hi) ratio += fmt::format(" .. {:.3g} (particle {})", *lo, lo - r.begin());
+    // Its effect on landing time and place, when the verdict does not list them already.
+    for (AdviceMetric m : {AdviceMetric::landing_time, AdviceMetric::landing_point})
+        if (!c.run.metric(m).beyond_tolerance) ratio += ", " + describe(m, c.run.metric(m));
+    return ratio;
+}
+
+// The rows, in the order of the verdicts and of the JSON's "runs": first each drag model against
+// the reference (the reference itself last, all zeros), then the toggles.
+const std::array<TermRow, 7> rows = {{
+    {"no drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::none; },
+     use_drag<DragModel::none>, use_reference_drag, nullptr, nullptr, false},
+    {"linear drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::linear; },
+     use_drag<DragModel::linear>, use_reference_drag, nullptr, linear_note},
+    {"quadratic drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::quadratic; },
+     use_drag<DragModel::quadratic>, use_reference_drag, nullptr, quadratic_note},
+    {"sphere_re drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::sphere_re; },
+     use_reference_drag, use_reference_drag, nullptr, nullptr, false},
+    {"drag", TermKind::toggle, [](const Model& m) { return m.drag.model != DragModel::none; }, drag_on,
+     use_drag<DragModel::none>, nullptr, drag_note},
+    {"buoyancy", TermKind::toggle, [](const Model& m) { return m.world.buoyancy; },
+     [](Model& m) { return set(m.world.buoyancy, true); }, [](Model& m) { return set(m.world.buoyancy, false); },
+     nullptr, buoyancy_note},
+    // Wind last: the runs of a scene with wind end with the calm run.
+    {"wind", TermKind::toggle, [](const Model& m) { return m.world.wind.kind != WindKind::none; }, as_configured,
+     [](Model& m) { return set(m.world.wind.kind, WindKind::none); }, wind_not_applicable, nullptr},
+}};
+
+}  // namespace
+
+bool use_reference_drag(Model& m) { return use_drag<reference_drag>(m); }
+
+std::span<const TermRow> term_table() { return rows; }
+
+}  // namespace pl

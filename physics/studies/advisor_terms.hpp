@@ -1,0 +1,77 @@
+// The advisor's term table: one row per term it judges. A row says how to build, from the
+// variant as configured, the two models whose runs are compared:
+//   toggle rows:      measured = the term on, baseline = the term off; the difference on - off is
+//                     the term's effect, whether the variant has the term on or not ("buoyancy is
+//                     off but would change landing time by ...: turn it on");
+//   alternative rows: measured = a cheaper drag model, baseline = the reference (sphere_re with
+//                     the variant's settings); the difference says whether the cheaper model is enough.
+// Each builder edits a copy of the variant's Model and returns whether it changed anything: the
+// advisor runs each distinct model once (a builder that changes nothing reuses the variant's own
+// run; the same builder in two rows reuses its run).
+//
+// Adding a term is one row in term_table() (advisor_terms.cpp), e.g. for a boolean World field:
+//   {"added mass", TermKind::toggle,
+//    [](const Model& m) { return m.world.added_mass; },
+//    [](Model& m) { return set(m.world.added_mass, true); },    // measured: on
+//    [](Model& m) { return set(m.world.added_mass, false); },   // baseline: off
+//    nullptr,    // not_applicable: always judged
+//    nullptr},   // note: no extra clause
+// and for an enum, the air model (baseline: the constant air of World::air):
+//   {"air model (isa)", TermKind::toggle,
+//    [](const Model& m) { return m.world.air.model == AirModel::isa; },
+//    [](Model& m) { return set(m.world.air.model, AirModel::isa); },
+//    [](Model& m) { return set(m.world.air.model, AirModel::constant); }, nullptr, nullptr},
+// Toggle verdicts read "<name> matters: ...", "<name> is off but would change ...: turn it on".
+#pragma once
+
+#include "physics/studies/advisor.hpp"
+
+#include <span>
+#include <utility>
+
+namespace pl {
+
+enum class TermKind { toggle, alternative };
+
+// Sets `field` to `to`; true when that changed it. Builders are one call of this.
+template <class T>
+bool set(T& field, const T& to) {
+    return std::exchange(field, to) != to;
+}
+
+// What a row's note (an extra clause in its verdict) may look at.
+struct TermContext {
+    const Model& variant;
+    const VariantAdvice& advice;  // the dimensionless numbers (Re, drag/weight, density ratios)
+    const ModelRun& run;          // this row's comparison
+};
+
+struct TermRow {
+    const char* name;                      // in the verdicts and the JSON's "term"
+    TermKind kind;
+    bool (*in_scene)(const Model& variant);  // the variant has the term on / uses this model
+    bool (*measured)(Model&);              // builds the measured model from a copy of the variant
+    bool (*baseline)(Model&);              // builds the baseline model from a copy of the variant
+    // nullptr, or a function returning why the term cannot be judged here (nullptr: it can).
+    const char* (*not_applicable)(const Model& variant);
+    // nullptr, or an extra clause for the verdict ("max drag/weight = 0.4").
+    std::string (*note)(const TermContext&);
+    // false: the row is data only (the JSON's runs), its verdict is another row's (no drag: the
+    // drag toggle) or there is none (the reference against itself).
+    bool verdict = true;
+};
+
+// The reference the alternative rows compare against: sphere_re, the variant's own settings if it
+// uses sphere_re.
+inline constexpr DragModel reference_drag = DragModel::sphere_re;
+
+// The candidate drag settings for `model`: the variant's own settings for its own model,
+// defaults otherwise (Stokes from the air's viscosity for linear; the configured Cd for quadratic).
+DragSettings candidate_drag(DragModel model, const DragSettings& configured);
+
+// The builder that switches a copy of the variant to the reference drag model.
+bool use_reference_drag(Model& m);
+
+std::span<const TermRow> term_table();
+
+}  // namespace pl

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The Advise tab runs `particle-lab advise`'s code on the open scene in the background and shows
+# its verdicts: on feather_vs_ball, a vertical drop, drag matters in the air variant by landing
+# time (not by landing point or apex, which do not move), and the vacuum variant is told what
+# turning drag on would change; buoyancy (the foam ball is 0.64 of the air's density) matters too.
+# Usage: advise_tab.sh <particle-lab binary> <source dir>
+APP=$1
+SRC=$2
+source "$SRC/tests/gui/gui_test_lib.bash"
+make_workdir
+STATE="$WORK/state.json"
+
+start_app "$SRC/presets/feather_vs_ball.json" --frames 1000000 --dump-state "$STATE"
+wait_for_state "$STATE" '"tab.advise" in d["widgets"]' "there is no Advise tab"
+click_widget "$STATE" tab.advise
+wait_for_state "$STATE" '"advise.run" in d["widgets"]' "the Advise tab did not open"
+click_widget "$STATE" advise.run
+wait_for_state "$STATE" 'len(d["advice"]["variants"]) == 2 and not d["advice"]["running"]' "the advice did not run to its end"
+json_check "$STATE" 'any(v.startswith("drag matters: landing time +") for v in d["advice"]["variants"][0]["verdicts"])' \
+    "the air variant's verdicts do not say drag matters by landing time"
+json_check "$STATE" 'any(v.startswith("drag is off but would change landing time +") for v in d["advice"]["variants"][1]["verdicts"])' \
+    "the vacuum variant's verdicts do not say what drag would change"
+json_check "$STATE" '"buoyancy" in d["advice"]["variants"][0]["matters"]' "buoyancy is not among the terms that matter"
+quit_app
+echo "OK"
