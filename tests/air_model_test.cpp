@@ -128,7 +128,7 @@ TEST(AddedMass, AccelerationFromRest) {
     for (const bool buoyancy : {false, true}) {
         const double a0 = g * (dropped.mass - (buoyancy ? rho_v : 0.0)) / (dropped.mass + 0.5 * rho_v);
         Simulation sim(still_air(true, buoyancy, DragModel::none), {dropped});
-        EXPECT_NEAR(sim.acceleration(0).y, -a0, 1e-15 * a0);
+        EXPECT_NEAR(sim.acceleration(0).y, -a0, 1e-14 * a0);
         // Without drag the fall is uniformly accelerated, and RK4 follows it exactly.
         sim.step_n(2000);
         const double t = sim.time();
@@ -174,7 +174,9 @@ Model ordered_scene(Method method, double dt) {
     return m;
 }
 
-const ParticleSpec thrown{{0, 20, 0}, {8, 12, 3}, 1e-3, 0.05};
+// A 4 g foam ball, R = 5 cm: the drag's stiffness 2 k |v| stays below 16 1/s, inside every
+// method's stable and asymptotic range at the steps below.
+const ParticleSpec thrown{{0, 20, 0}, {8, 12, 3}, 4e-3, 0.05};
 constexpr double flight = 1.2;
 
 double error_at(Method method, double dt) {
@@ -196,7 +198,7 @@ TEST(AirColumn, EachMethodKeepsItsOrder) {
     const Case cases[] = {{Method::explicit_euler, 0.01, 1.0, 0.15},
                           {Method::semi_implicit_euler, 0.01, 1.0, 0.15},
                           {Method::velocity_verlet, 0.01, 2.0, 0.15},
-                          {Method::rk4, 0.04, 4.0, 0.2}};
+                          {Method::rk4, 0.02, 4.0, 0.2}};
     for (const Case& c : cases) {
         const double observed = std::log2(error_at(c.method, c.dt) / error_at(c.method, c.dt / 2));
         EXPECT_NEAR(observed, c.order, c.tolerance) << to_string(c.method);
@@ -229,7 +231,7 @@ TEST(AirColumn, PresetFieldsRoundTrip) {
     v.label = "sea level";
     v.air = Air{1.225, 1.81e-5, AirModel::isa, -120.25};
     s.variants = {v};
-    s.particles = {foam};
+    s.particles = {{{0, 0, 0}, {6, -3, 2}, 1e-3, 0.05}};
     const LoadResult r = parse_preset(serialize_preset(s));
     ASSERT_TRUE(r.ok()) << r.error_text();
     EXPECT_EQ(r.scene->world.air.model, AirModel::isa);
