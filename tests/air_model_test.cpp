@@ -198,7 +198,8 @@ TEST(AirColumn, EachMethodKeepsItsOrder) {
     const Case cases[] = {{Method::explicit_euler, 0.01, 1.0, 0.15},
                           {Method::semi_implicit_euler, 0.01, 1.0, 0.15},
                           {Method::velocity_verlet, 0.01, 2.0, 0.15},
-                          {Method::rk4, 0.02, 4.0, 0.2}};
+                          {Method::rk4, 0.02, 4.0, 0.2},
+                          {Method::exponential, 0.01, 1.0, 0.15}};  // through Forces::linearise
     for (const Case& c : cases) {
         const double observed = std::log2(error_at(c.method, c.dt) / error_at(c.method, c.dt / 2));
         EXPECT_NEAR(observed, c.order, c.tolerance) << to_string(c.method);
