@@ -202,8 +202,10 @@ TEST(ShippedPresets, ComparisonPresetsHaveTheirVariants) {
 
     const Scene altitude = load_ok(preset_dir / "altitude_air.json");
     ASSERT_EQ(variant_count(altitude), 2u);
-    EXPECT_EQ(model_for_variant(altitude, 1).world.air.density_kg_m3, 0.909);
-    EXPECT_EQ(model_for_variant(altitude, 1).world.air.viscosity_pa_s, 1.69e-5);
+    EXPECT_EQ(model_for_variant(altitude, 0).world.air.model, AirModel::isa);
+    EXPECT_EQ(model_for_variant(altitude, 0).world.air.base_altitude_m, 0.0);
+    EXPECT_EQ(model_for_variant(altitude, 1).world.air.model, AirModel::isa);
+    EXPECT_EQ(model_for_variant(altitude, 1).world.air.base_altitude_m, 3000.0);
 }
 
 TEST(ShippedPresets, DropStartsTwoMetresAboveTheFloor) {

@@ -51,7 +51,7 @@ void start_tracking(PlotHistory& h, const Experiment& e) {
             const Vec3 vel = start.state().velocity(i);
             tracks[i].height.push(0.0, start.state().y[i] - floor_y);
             tracks[i].speed.push(0.0, glm::length(vel));
-            tracks[i].kinetic.push(0.0, kinetic_energy(start.state().mass[i], vel));
+            tracks[i].kinetic.push(0.0, kinetic_energy(start.state().inertial_mass[i], vel));
             h.variants[v].paths[i].push(0.0, start.state().position(i));
         }
         const EnergyBreakdown total = total_energy(start.state(), start.model().world.gravity, start.model().room);
@@ -154,7 +154,7 @@ void sample_particles(PlotHistory& h, const Experiment& e, double t) {
             const Vec3 vel = st.velocity(i);
             track.particles[i].height.push(t, st.y[i] - floor_y);
             track.particles[i].speed.push(t, glm::length(vel));
-            track.particles[i].kinetic.push(t, kinetic_energy(st.mass[i], vel));
+            track.particles[i].kinetic.push(t, kinetic_energy(st.inertial_mass[i], vel));
             track.paths[i].push(t, st.position(i));
         }
     }

@@ -33,8 +33,15 @@ std::vector<RunSetting> run_settings(const Model& m, const ParticleSpec& p0, con
         out.push_back({"b", m.drag.linear_b ? number(*m.drag.linear_b, " N s/m") : std::string("Stokes")});
     out.push_back({"wind", to_string(m.world.wind.kind)});
     if (m.world.wind.kind != WindKind::none) out.push_back({"wind velocity", vector3(m.world.wind.velocity, " m/s")});
-    out.push_back({"air density", number(m.world.air.density_kg_m3, " kg/m3")});
-    out.push_back({"air viscosity", number(m.world.air.viscosity_pa_s, " Pa s")});
+    if (m.world.air.model == AirModel::isa) {
+        out.push_back({"air", "ISA"});
+        out.push_back({"floor altitude", number(m.world.air.base_altitude_m, " m")});
+    } else {
+        out.push_back({"air density", number(m.world.air.density_kg_m3, " kg/m3")});
+        out.push_back({"air viscosity", number(m.world.air.viscosity_pa_s, " Pa s")});
+    }
+    if (m.world.buoyancy) out.push_back({"buoyancy", "on"});
+    if (m.world.added_mass) out.push_back({"added mass", "on"});
     out.push_back({"e", number(m.contact.restitution)});
     out.push_back({"mu", number(m.contact.friction)});
     out.push_back({"rest speed", number(m.contact.rest_speed, " m/s")});

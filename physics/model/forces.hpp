@@ -27,6 +27,9 @@ struct LinearisedForces {
     Vec3 wind{0.0};
     Vec3 body{0.0};   // gravity plus the other body terms
     Vec3 extra{0.0};  // the body terms other than gravity (their work goes to the air_work line)
+    // The air column's m / M (terms/air_column.hpp): k and body are per kg of the inertial mass
+    // M, extra per kg of m (the ledger's unit), so the drag's ledger uses k / inertia_scale.
+    double inertia_scale = 1.0;
 };
 
 namespace detail {
@@ -40,6 +43,23 @@ struct first_with_role<R, T, Rest...> {
 };
 }  // namespace detail
 
+// A Forces functor's terms reloaded for the air at height y (terms/air_column.hpp), counting
+// their evaluations in the original (the copy's counters start at 0 and are added back as it
+// is destroyed).
+template <class F>
+struct LocalAir {
+    const F& origin;
+    F local;
+    LocalAir(const F& f, double y) : origin(f), local(f) {
+        local.load(static_cast<const typename F::AirColumnTerm&>(f).inputs_at(y));
+        local.clear_evaluations();
+    }
+    LocalAir(const LocalAir&) = delete;
+    LocalAir& operator=(const LocalAir&) = delete;
+    ~LocalAir() { origin.take_evaluations(local); }
+    const F* operator->() const { return &local; }
+};
+
 // Terms: the gravity term first, then at most one drag term, at most one air term, and body
 // terms (constant forces per particle), in terms/term_list.hpp's order.
 template <class... Terms>
@@ -47,6 +67,8 @@ struct Forces : Terms... {
     using DragTerm = typename detail::first_with_role<TermRole::drag, Terms...>::type;
     using AirTerm = typename detail::first_with_role<TermRole::air, Terms...>::type;
     using LiftTerm = typename detail::first_with_role<TermRole::lift, Terms...>::type;
+    using AirColumnTerm = typename detail::first_with_role<TermRole::medium, Terms...>::type;
+    static constexpr bool has_air_column = !std::is_void_v<AirColumnTerm>;
     static constexpr bool has_drag = !std::is_void_v<DragTerm>;
     static constexpr bool has_wind = !std::is_void_v<AirTerm>;
     static constexpr bool has_lift = !std::is_void_v<LiftTerm>;
@@ -78,7 +100,34 @@ struct Forces : Terms... {
         else return Vec3(0.0);
     }
 
+    // The derivative at (x, v, t): the terms' sum, through the air column where there is one.
     Derivative operator()(const Vec3& x, const Vec3& v, double t) const {
+        if constexpr (has_air_column) {
+            const typename AirColumnTerm::Here here = AirColumnTerm::at(x.y);
+            Derivative d = AirColumnTerm::varies ? in_air_at(x.y)->in_uniform_air(x, v, t) : in_uniform_air(x, v, t);
+            d.a = AirColumnTerm::inertial(here, d.a, v);  // the powers stay per kg of m
+            return d;
+        } else {
+            return in_uniform_air(x, v, t);
+        }
+    }
+
+    // The linear-drag view (integrators.hpp: exponential_step), through the air column likewise.
+    LinearisedForces linearise(const Vec3& x, const Vec3& v, double t) const {
+        if constexpr (has_air_column) {
+            const typename AirColumnTerm::Here here = AirColumnTerm::at(x.y);
+            LinearisedForces l = AirColumnTerm::varies ? in_air_at(x.y)->linearised_in_uniform_air(x, v, t)
+                                                       : linearised_in_uniform_air(x, v, t);
+            l.k *= here.scale;
+            l.body = AirColumnTerm::inertial(here, l.body, v);
+            l.inertia_scale = here.scale;
+            return l;
+        } else {
+            return linearised_in_uniform_air(x, v, t);
+        }
+    }
+
+    Derivative in_uniform_air(const Vec3& x, const Vec3& v, double t) const {
         ++this->gravity_term().evals;
         Derivative d{this->gravity};
         if constexpr (has_drag) {
@@ -98,7 +147,7 @@ struct Forces : Terms... {
         return d;
     }
 
-    LinearisedForces linearise(const Vec3& x, const Vec3& v, double t) const {
+    LinearisedForces linearised_in_uniform_air(const Vec3& x, const Vec3& v, double t) const {
         ++this->gravity_term().evals;
         LinearisedForces l;
         l.body = this->gravity;
@@ -123,12 +172,17 @@ struct Forces : Terms... {
         ((c.*Terms::counter += Terms::evals), ...);
         return c;
     }
+    void clear_evaluations() { ((Terms::evals = 0), ...); }
+    // Adds the evaluations another copy counted.
+    void take_evaluations(const Forces& other) const { ((Terms::evals += other.Terms::evals), ...); }
     // Adds `times` the evaluations `per` counts (as if the lanes had evaluated through this functor).
     void add_evaluations(const ForceCounters& per, std::uint64_t times) {
         ((Terms::evals += times * (per.*Terms::counter)), ...);
     }
 
 private:
+    LocalAir<Forces> in_air_at(double y) const { return LocalAir<Forces>(*this, y); }
+
     using GravityTerm = typename detail::first_with_role<TermRole::gravity, Terms...>::type;
     const GravityTerm& gravity_term() const { return *this; }
 

@@ -1,5 +1,7 @@
 #include "physics/model/model_check.hpp"
 
+#include "physics/model/air_model.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -88,6 +90,12 @@ void check_model(const Model& m, const std::vector<ParticleSpec>& particles) {
     finite("world.gravity", m.world.gravity);
     non_negative("world.air.density", m.world.air.density_kg_m3);
     non_negative("world.air.viscosity", m.world.air.viscosity_pa_s);
+    if (m.world.air.model != AirModel::constant && m.world.air.model != AirModel::isa)
+        fail("world.air.model", "must be constant or isa");
+    if (m.world.air.model == AirModel::isa &&
+        !(m.world.air.base_altitude_m >= min_base_altitude_m && m.world.air.base_altitude_m <= max_base_altitude_m))
+        fail("world.air.base_altitude", fmt::format("must be in [{}, {}] m (the troposphere), got {}",
+                                                    min_base_altitude_m, max_base_altitude_m, m.world.air.base_altitude_m));
     check_wind(m.world.wind);
     non_negative("drag.cd", m.drag.cd);
     if (m.drag.linear_b) non_negative("drag.b", *m.drag.linear_b);

@@ -88,6 +88,14 @@ const char* to_string(RestitutionLaw l) {
     return "?";
 }
 
+const char* to_string(AirModel a) {
+    switch (a) {
+        case AirModel::constant: return "constant";
+        case AirModel::isa: return "isa";
+    }
+    return "?";
+}
+
 double inertia_factor(Inertia shape) { return shape == Inertia::hollow ? 2.0 / 3.0 : 2.0 / 5.0; }
 
 std::optional<Method> method_from_string(const std::string& s) {

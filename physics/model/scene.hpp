@@ -27,9 +27,15 @@ struct Room {
     double floor_y() const { return center.y - 0.5 * size.y; }
 };
 
+// How the air's density and viscosity are found (physics/model/air_model.hpp): constant, the
+// two fields below; isa, the International Standard Atmosphere at each particle's altitude.
+enum class AirModel { constant, isa };
+
 struct Air {
-    double density_kg_m3 = 1.225;   // ISA sea level
-    double viscosity_pa_s = 1.81e-5;  // dynamic viscosity at 15 C
+    double density_kg_m3 = 1.225;   // constant: ISA sea level
+    double viscosity_pa_s = 1.81e-5;  // constant: dynamic viscosity at 15 C
+    AirModel model = AirModel::constant;
+    double base_altitude_m = 0.0;   // isa: geometric altitude of the room's floor above sea level
 };
 
 enum class WindKind { none, constant, gust, shear, vortex };
@@ -58,6 +64,7 @@ struct World {
     Air air;
     WindSettings wind;
     bool buoyancy = false;  // the displaced air's weight lifts each particle (terms/buoyancy.hpp)
+    bool added_mass = false;  // each particle carries 1/2 rho V of air along (terms/air_column.hpp)
 };
 
 enum class DragModel { none, linear, quadratic, sphere_re };
@@ -171,6 +178,7 @@ const char* to_string(WindKind w);
 const char* to_string(LiftModel l);
 const char* to_string(Inertia i);
 const char* to_string(RestitutionLaw l);
+const char* to_string(AirModel a);
 std::optional<Method> method_from_string(const std::string& s);
 std::optional<DragModel> drag_model_from_string(const std::string& s);
 std::optional<WindKind> wind_kind_from_string(const std::string& s);
@@ -191,10 +199,14 @@ bool keeps_bounce_energy(Method m);
 // Whether the particles' spin takes part in the motion (Magnus lift or contact coupled to spin);
 // such a model runs on the generic kernel, which carries the spin.
 inline bool spin_matters(const Model& m) { return m.drag.lift != LiftModel::none || m.contact.spin; }
-// Whether the model needs the generic kernel: spin, or a restitution that depends on the speed
-// (the fast kernel's contact lanes apply a constant e).
+// Whether the air changes along a particle's path or moves with it: ISA air (density and
+// viscosity depend on the height) or added mass (the inertia is m + 1/2 rho V). Such a model's
+// forces are evaluated through terms/air_column.hpp, which only the generic kernel carries.
+inline bool air_column_matters(const Model& m) { return m.world.added_mass || m.world.air.model != AirModel::constant; }
+// Whether the model needs the generic kernel: spin, a restitution that depends on the speed
+// (the fast kernel's contact lanes apply a constant e), or the air column above.
 inline bool needs_generic_kernel(const Model& m) {
-    return spin_matters(m) || m.contact.restitution_law != RestitutionLaw::constant;
+    return spin_matters(m) || m.contact.restitution_law != RestitutionLaw::constant || air_column_matters(m);
 }
 
 }  // namespace pl

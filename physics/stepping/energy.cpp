@@ -18,7 +18,7 @@ double spin_energy(double mass, double radius, double inertia, const Vec3& w) {
 
 EnergyBreakdown particle_energy(const ParticleState& s, std::size_t i, const Vec3& g, const Room& room) {
     EnergyBreakdown e;
-    e.kinetic = kinetic_energy(s.mass[i], s.velocity(i));
+    e.kinetic = kinetic_energy(s.inertial_mass[i], s.velocity(i));
     e.potential = potential_energy(g, room, s.mass[i], s.position(i));
     e.spin = spin_energy(s.mass[i], s.radius[i], s.inertia[i], s.spin(i));
     e.dissipated_rolling = s.dissipated_rolling[i];

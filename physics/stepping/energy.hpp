@@ -1,5 +1,5 @@
 // Energy bookkeeping: E0 + wind work = KE + spin KE + PE + dissipated (bounce, friction, drag,
-// rolling) + residual.
+// rolling) + residual. With added mass, KE = 1/2 (m + m_a) v^2 and PE = m g h (terms/air_column.hpp).
 // The residual is the integrator's own energy error.
 #pragma once
 

@@ -1,5 +1,6 @@
 // The generic (reference) stepping kernel: one ParticleStepper::advance per particle, scalar.
 // The fast kernel (fast_kernel.cpp) must give the same bits; tests/fast_kernel_test.cpp checks.
+#include "physics/model/air_model.hpp"
 #include "physics/model/terms/term_list.hpp"
 #include "physics/stepping/fast_kernel.hpp"
 #include "physics/stepping/kernel.hpp"
@@ -36,7 +37,10 @@ void generic_step(const KernelContext& k) {
         in.mass = s.mass[i];
         in.radius = s.radius[i];
         ParticleStep p = load_step(s, i, hints, s.radius[i]);
-        if (spinning) p.spin = {{s.spin(i), t0, spin_decay}, s.inertia[i], 0.0};
+        // The spin couples to the translation of the inertial mass M (the added mass, terms/
+        // air_column.hpp): I = k m R^2 = (k m / M) M R^2. Its losses are per kg of M.
+        const double inertial = F::has_air_column ? inertial_mass(m.world, m.room, s.mass[i], s.radius[i], p.y.x.y) : s.mass[i];
+        if (spinning) p.spin = {{s.spin(i), t0, spin_decay}, s.inertia[i] * (s.mass[i] / inertial), 0.0};
         in.spin = &p.spin.clock;
         f.load(in);
         const bool finished = stepper.advance(p, static_cast<std::uint32_t>(i), t0, h);
@@ -46,11 +50,16 @@ void generic_step(const KernelContext& k) {
             k.warnings.raise(w.kind, w.particle, w.t, w.value);
             continue;
         }
-        store_step<F>(s, i, p, hints, s.mass[i]);
+        if constexpr (F::has_air_column) {
+            // Drag and air work per kg of m; bounce and friction, from velocity changes, per kg of M.
+            store_step<F>(s, i, p, hints, s.mass[i], inertial_mass(m.world, m.room, s.mass[i], s.radius[i], p.y.x.y));
+        } else {
+            store_step<F>(s, i, p, hints, s.mass[i]);
+        }
         if (spinning) {
             s.set_spin(i, p.spin.restart(t0 + h, s.radius[i]));
-            s.dissipated_rolling[i] += s.mass[i] * p.spin.rolling_loss;
-            s.dissipated_drag[i] += s.mass[i] * p.spin.decay_loss;
+            s.dissipated_rolling[i] += inertial * p.spin.rolling_loss;
+            s.dissipated_drag[i] += inertial * p.spin.decay_loss;
         }
     }
     add_counts(k.counters, f, adaptive, contact_solves);

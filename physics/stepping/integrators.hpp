@@ -98,10 +98,13 @@ FlightState exponential_step(const FlightState& y, double t, double h, const F& 
     FlightState out;
     out.v = e * y.v + phi1 * forcing;
     out.x = y.x + phi1 * y.v + phi2 * forcing;
-    // Ledger: trapezoid of the (frozen-k) drag power at both ends.
+    // Ledger: trapezoid of the (frozen-k) drag power at both ends, per kg of m (the air column's
+    // k is per kg of the inertial mass: forces.hpp, LinearisedForces).
+    double k_ledger = k;
+    if constexpr (F::has_air_column) k_ledger = k / lin.inertia_scale;
     const Vec3 u0 = y.v - lin.wind, u1 = out.v - lin.wind;
-    out.drag_loss = y.drag_loss + 0.5 * h * k * (glm::dot(u0, u0) + glm::dot(u1, u1));
-    out.wind_gain = y.wind_gain - 0.5 * h * k * (glm::dot(u0, lin.wind) + glm::dot(u1, lin.wind));
+    out.drag_loss = y.drag_loss + 0.5 * h * k_ledger * (glm::dot(u0, u0) + glm::dot(u1, u1));
+    out.wind_gain = y.wind_gain - 0.5 * h * k_ledger * (glm::dot(u0, lin.wind) + glm::dot(u1, lin.wind));
     // The constant body terms' work (buoyancy), by the same trapezoid.
     if constexpr (F::has_extra_body)
         out.wind_gain += 0.5 * h * (glm::dot(lin.extra, y.v) + glm::dot(lin.extra, out.v));

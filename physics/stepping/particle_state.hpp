@@ -47,6 +47,9 @@ struct ParticleState {
     StateArray<double> dissipated_bounce, dissipated_friction, dissipated_drag, wind_work;
     StateArray<double> dissipated_rolling;  // by rolling resistance (contact.spin)
     StateArray<double> initial_energy;  // KE + spin KE + PE at t = 0
+    // The inertial mass at the particle's position: m, or m + 1/2 rho V with added mass (rho the
+    // air's at its height, physics/model/air_model.hpp); the kinetic energy is 1/2 this v^2.
+    StateArray<double> inertial_mass;
 
     std::size_t size() const { return x.size(); }
     Vec3 position(std::size_t i) const { return {x[i], y[i], z[i]}; }

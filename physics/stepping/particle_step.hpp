@@ -98,6 +98,17 @@ void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vec
     s.dissipated_friction[i] += mass * p.friction_loss;
 }
 
+// store_step with the air column (terms/air_column.hpp): drag and air work per kg of `mass`,
+// bounce and friction losses per kg of `inertial`, the inertial mass at the new position.
+template <class F>
+void store_step(ParticleState& s, std::size_t i, const ParticleStep& p, std::vector<double>* hints, double mass,
+                double inertial) {
+    store_motion<F>(s, i, p, hints, mass);
+    s.inertial_mass[i] = inertial;
+    s.dissipated_bounce[i] += inertial * p.bounce_loss;
+    s.dissipated_friction[i] += inertial * p.friction_loss;
+}
+
 // Adds what one kernel pass counted (force evaluations, adaptive steps, contact solves).
 template <class F>
 void add_counts(ForceCounters& c, const F& forces, const AdaptiveStats& adaptive, std::uint64_t contact_solves) {

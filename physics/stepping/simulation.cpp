@@ -1,5 +1,6 @@
 #include "physics/stepping/simulation.hpp"
 
+#include "physics/model/air_model.hpp"
 #include "physics/model/drag.hpp"
 #include "physics/model/model_check.hpp"
 #include "physics/model/terms/term_list.hpp"
@@ -25,10 +26,14 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
         state_.radius[i] = p.radius;
         state_.set_spin(i, p.spin);
         state_.inertia[i] = inertia_factor(p.inertia);
-        const DragCoefficients c = drag_coefficients(model_.drag, model_.world.air, p.mass, p.radius);
+        // ISA air: the coefficients at the starting height (the monitor's Re and stiffness; the
+        // force terms recompute them at every height, terms/air_column.hpp).
+        const Air air = local_air(model_.world.air, model_.room, p.position.y);
+        const DragCoefficients c = drag_coefficients(model_.drag, air, p.mass, p.radius);
         state_.drag_k[i] = c.k;
         state_.drag_re_scale[i] = c.re_scale;
-        state_.initial_energy[i] = kinetic_energy(p.mass, p.velocity) +
+        state_.inertial_mass[i] = inertial_mass(model_.world, model_.room, p.mass, p.radius, p.position.y);
+        state_.initial_energy[i] = kinetic_energy(state_.inertial_mass[i], p.velocity) +
                                    potential_energy(model_.world.gravity, model_.room, p.mass, p.position) +
                                    spin_energy(p.mass, p.radius, state_.inertia[i], p.spin);
     }

@@ -5,6 +5,7 @@
 #include "physics/model/schema/air_fields.hpp"
 #include "physics/model/schema/limits.hpp"
 #include "physics/model/schema/wind_fields.hpp"
+#include "physics/model/terms/air_column.hpp"
 #include "physics/model/terms/buoyancy.hpp"
 
 namespace pl::schema {
@@ -12,6 +13,7 @@ namespace pl::schema {
 inline constexpr Field<World> world_rows[] = {
     vec3("gravity", &World::gravity, "m/s^2", symmetric(max_gravity_mps2), "gravity", "y is up: [0, -9.81, 0] on Earth."),
     terms::buoyancy_row,
+    terms::added_mass_row,
 };
 
 inline constexpr ChildInfo air_child{"air", "The air the particles move through (drag and wind act through it)."};

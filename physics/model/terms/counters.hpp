@@ -8,6 +8,7 @@ namespace pl {
 
 struct ForceCounters {
     std::uint64_t gravity = 0, drag = 0, wind = 0, buoyancy = 0, magnus = 0;  // one count per particle per evaluation
+    std::uint64_t air_column = 0;      // evaluations through the air column (terms/air_column.hpp)
     std::uint64_t rejected_steps = 0;  // dopri5 only
     std::uint64_t accepted_steps = 0;  // dopri5 internal steps
     std::uint64_t contacts = 0;        // time-of-impact solves
@@ -19,6 +20,7 @@ struct ForceCounters {
         wind += o.wind;
         buoyancy += o.buoyancy;
         magnus += o.magnus;
+        air_column += o.air_column;
         rejected_steps += o.rejected_steps;
         accepted_steps += o.accepted_steps;
         contacts += o.contacts;

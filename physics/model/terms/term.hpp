@@ -1,9 +1,11 @@
 // What every force term declares (see README, Architecture). A term is a struct with
 //   role     body (a constant force per particle), drag (a = -rate(u) u, u = v - w; at most
 //            one drag term is enabled), air (the wind w(x, t) the drag sees; needs a drag) or
-//            lift (a = lift(u, t), normal to u, from the particle's spin: terms/magnus.hpp);
+//            lift (a = lift(u, t), normal to u, from the particle's spin: terms/magnus.hpp) or
+//            medium (the air column: the others' air at the particle's height and the inertia
+//            of the air it carries, terms/air_column.hpp);
 //   ledger   which ledger line its work goes to (potential: gravity's work is the potential
-//            energy; drag: dissipated by drag; air_work: work done by the air);
+//            energy; drag: dissipated by drag; air_work: work done by the air; none);
 //   counter  its slot in ForceCounters, and `evals`, its evaluation count;
 //   enabled(model)  whether a scene enables it (the kernel is built from the enabled list);
 //   rest_is_uniform whether the forces at rest (v = 0) are the same for every particle with it
@@ -27,8 +29,8 @@ namespace pl {
 class WindField;
 struct SpinClock;
 
-enum class TermRole { gravity, body, drag, air, lift };
-enum class Ledger { potential, drag, air_work };
+enum class TermRole { gravity, body, drag, air, lift, medium };
+enum class Ledger { none, potential, drag, air_work };
 
 // Per-particle and scene scalars a term may load (drag constants, wind known in advance, ...).
 struct TermInputs {
@@ -40,6 +42,7 @@ struct TermInputs {
     double air_density = 0.0;
     LiftModel lift = LiftModel::none;  // Magnus: the lift correlation (the scene's)
     const SpinClock* spin = nullptr;   // Magnus: the particle's spin
+    const Model* model = nullptr;      // the air column: the scene (air, room, drag settings)
 };
 
 // The scene's part of the inputs (the per-particle fields left at 0).
@@ -51,6 +54,7 @@ inline TermInputs scene_inputs(const Model& m, const WindField* wind) {
     in.wind = wind;
     in.air_density = m.world.air.density_kg_m3;
     in.lift = m.drag.lift;
+    in.model = &m;
     return in;
 }
 

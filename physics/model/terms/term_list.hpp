@@ -6,6 +6,7 @@
 #pragma once
 
 #include "physics/model/forces.hpp"
+#include "physics/model/terms/air_column.hpp"
 #include "physics/model/terms/buoyancy.hpp"
 #include "physics/model/terms/drag_linear.hpp"
 #include "physics/model/terms/drag_quadratic.hpp"
@@ -23,12 +24,13 @@ template <class... Alternatives>
 struct Group {};
 
 // Gravity is always on and comes first; then the groups, in this order. The flight groups are
-// the terms of a point mass (the fast kernel's); the spin group needs the particle's spin, which
-// only the generic kernel carries (scene.hpp: spin_matters).
+// the terms of a point mass in uniform air (the fast kernel's); the spin group needs the
+// particle's spin, and the air column reloads the others per evaluation, which only the generic
+// kernel does (scene.hpp: needs_generic_kernel).
 using FlightTermGroups = std::tuple<Group<DragLinear, DragQuadratic, DragSphereRe>,  //
                                     Group<Wind>,                                     //
                                     Group<Buoyancy>>;
-using TermGroups = decltype(std::tuple_cat(FlightTermGroups{}, std::tuple<Group<Magnus>>{}));
+using TermGroups = decltype(std::tuple_cat(FlightTermGroups{}, std::tuple<Group<Magnus>, Group<AirColumn>>{}));
 
 namespace detail {
 
