@@ -83,7 +83,7 @@ TEST(Advisor, SlowDenseBallNeedsNoDragUnlessItBouncesLong) {
     EXPECT_LT(v.max_drag_to_weight, 0.01);
     EXPECT_GT(v.re_max, 500.0);  // not Stokes flow, but it does not matter here
     EXPECT_TRUE(v.warnings.empty() || !any_contains(v.warnings, "Mach")) << joined(v.warnings);
-    ASSERT_EQ(v.runs.size(), 7u);  // no drag, linear, quadratic, sphere_re, drag, buoyancy, wind
+    ASSERT_EQ(v.runs.size(), 9u);  // no drag, linear, quadratic, sphere_re, drag, buoyancy, added mass, ISA, wind
     EXPECT_LT(v.runs[0].landing_difference_m, 1e-3);
     EXPECT_EQ(v.runs[3].landing_difference_m, 0.0);  // the reference against itself
     EXPECT_FALSE(v.runs[3].matters);
@@ -122,7 +122,7 @@ TEST(Advisor, WindWithoutDragHasNoEffectAndWindWithDragIsMeasured) {
     ASSERT_EQ(a.variants.size(), 2u);
     EXPECT_TRUE(any_contains(a.variants[0].verdicts, "drag is off, so wind has no effect")) << joined(a.variants[0].verdicts);
     EXPECT_TRUE(any_contains(a.variants[1].verdicts, "wind matters: ")) << joined(a.variants[1].verdicts);
-    ASSERT_EQ(a.variants[1].runs.size(), 7u);
+    ASSERT_EQ(a.variants[1].runs.size(), 9u);
     EXPECT_FALSE(a.variants[1].runs.back().with_wind);
     EXPECT_GT(a.variants[1].runs.back().landing_difference_m, 1e-3);
 }
@@ -200,16 +200,20 @@ TEST(Advisor, LightBallLandingTimesConvergeToTheClosedFormAtTheMethodsOrder) {
     EXPECT_LT(air_fine, 1e-3);
 }
 
-TEST(Advisor, FeatherVsBallPresetNeedsDragInAirAndSaysSoForTheVacuumVariant) {
+TEST(Advisor, FeatherVsBallPresetNeedsDragBuoyancyAndAddedMassInAirAndNoneInVacuum) {
     const LoadResult r = load_preset(std::string(PL_SOURCE_DIR) + "/presets/feather_vs_ball.json");
     ASSERT_TRUE(r.ok()) << r.error_text();
     const Advice a = advise(*r.scene, {});
     ASSERT_EQ(a.variants.size(), 2u);
     EXPECT_NE(a.variants[0].cheapest_adequate, DragModel::none) << joined(a.variants[0].verdicts);
     EXPECT_TRUE(any_contains(a.variants[0].verdicts, "drag matters: landing time +")) << joined(a.variants[0].verdicts);
-    // The vacuum variant has drag off: the verdict says what turning it on would change.
-    EXPECT_TRUE(any_contains(a.variants[1].verdicts, "drag is off but would change landing time +"))
+    for (const char* term : {"buoyancy matters: landing time +", "added mass matters: landing time +"})
+        EXPECT_TRUE(any_contains(a.variants[0].verdicts, term)) << joined(a.variants[0].verdicts);
+    // The vacuum variant (air of 1e-9 kg/m^3): drag would change nothing, and no ISA altitude
+    // has so thin an air.
+    EXPECT_TRUE(any_contains(a.variants[1].verdicts, "drag is off and would change nothing beyond tolerance"))
         << joined(a.variants[1].verdicts);
+    EXPECT_TRUE(any_contains(a.variants[1].verdicts, "thinner than the ISA's anywhere")) << joined(a.variants[1].verdicts);
 }
 
 TEST(Advisor, BuoyancyOfALightBallMattersAndTheVerdictGivesTheDensityRatio) {
@@ -252,6 +256,49 @@ TEST(Advisor, BuoyancyOfASteelBallInAShortDropDoesNotMatter) {
     const double expected = std::sqrt(2.0 * h / (g0 * (1.0 - ratio))) - std::sqrt(2.0 * h / g0);
     EXPECT_NEAR(b.metric(AdviceMetric::landing_time).difference, expected, 0.1 * expected);
     EXPECT_TRUE(any_contains(v.verdicts, "buoyancy is off and would change nothing beyond tolerance")) << joined(v.verdicts);
+}
+
+TEST(Advisor, AddedMassOfALightBallMattersByItsClosedForm) {
+    // The foam ball in vacuum-like stillness (no drag) with buoyancy on: its fall accelerates at
+    // g (m - rho V) / m, or g (m - rho V) / (m + rho V / 2) with the added mass: 0.36 g against
+    // 0.27 g, so it lands later by sqrt(2 h / a_on) - sqrt(2 h / a_off).
+    Scene scene = scene_with(foam_ball, DragModel::none);
+    scene.world.buoyancy = true;
+    const VariantAdvice v = advise(scene, {}).variants[0];
+    const ModelRun& added = run_named(v, "added mass");
+    EXPECT_FALSE(added.in_scene);
+    EXPECT_TRUE(added.matters) << joined(v.verdicts);
+    const double volume = 4.0 / 3.0 * std::numbers::pi * std::pow(foam_ball.radius, 3);
+    const double m = foam_ball.mass;
+    const double a_off = g0 * (m - rho_air * volume) / m, a_on = g0 * (m - rho_air * volume) / (m + 0.5 * rho_air * volume);
+    const double expected = std::sqrt(2.0 * foam_drop / a_on) - std::sqrt(2.0 * foam_drop / a_off);
+    EXPECT_NEAR(added.metric(AdviceMetric::landing_time).difference, expected, 2e-3);
+    EXPECT_TRUE(any_contains(v.verdicts, "added mass is off but would change landing time +")) << joined(v.verdicts);
+    EXPECT_TRUE(any_contains(v.verdicts, "added mass up to 0.321 of the particle's mass")) << joined(v.verdicts);
+}
+
+TEST(Advisor, ThinningAirMattersForAHighThrowNotForAShortDrop) {
+    // A baseball hit 40 m high in a 100 m hall: the ISA's air is 0.4% thinner at the apex than at
+    // the floor, so the ball flies farther than in constant floor-level air.
+    Scene hall;
+    hall.room.center = {0, 50, 0};
+    hall.room.size = {300, 100, 40};
+    hall.drag.model = DragModel::quadratic;
+    hall.integrator.dt = 1e-3;
+    hall.particles = {{{-140, 0.5, 0}, {30, 30, 0}, 0.145, 0.0366}};
+    const VariantAdvice high = advise(hall, {}).variants[0];
+    const ModelRun& isa = run_named(high, "ISA air (thinning with height)");
+    EXPECT_FALSE(isa.in_scene);
+    EXPECT_TRUE(isa.matters) << joined(high.verdicts);
+    const double farther = isa.metric(AdviceMetric::range).difference;
+    EXPECT_GT(farther, 0.01) << joined(high.verdicts);
+    EXPECT_LT(farther, 2.0) << joined(high.verdicts);
+    EXPECT_TRUE(any_contains(high.verdicts, "ISA density 1.225 kg/m^3 at the floor (0 m)")) << joined(high.verdicts);
+
+    // A steel ball dropped half a metre sees 0.005% thinner air: nothing changes beyond tolerance.
+    const ParticleSpec steel{{0, 0.51, 0}, {0, 0, 0}, 7800.0 * 4.0 / 3.0 * std::numbers::pi * 1e-6, 0.01};
+    const VariantAdvice low = advise(scene_with(steel, DragModel::quadratic), {}).variants[0];
+    EXPECT_FALSE(run_named(low, "ISA air (thinning with height)").matters) << joined(low.verdicts);
 }
 
 TEST(Advisor, EachMetricHasItsOwnTolerance) {

@@ -1,5 +1,7 @@
 #include "physics/studies/advisor.hpp"
 
+#include "physics/model/air_model.hpp"
+
 #include "physics/studies/advisor_runs.hpp"
 #include "physics/studies/advisor_terms.hpp"
 
@@ -156,11 +158,14 @@ void add_warnings(const Model& model, VariantAdvice& a) {
     }
 }
 
-// rho_air / rho_particle, rho_particle = m / (4/3 pi R^3).
+// rho_air / rho_particle, rho_particle = m / (4/3 pi R^3), with the air where the particle starts
+// (ISA air thins with height).
 std::vector<double> density_ratios(const Model& model, const std::vector<ParticleSpec>& particles) {
     std::vector<double> r;
-    for (const ParticleSpec& p : particles)
-        r.push_back(model.world.air.density_kg_m3 * (4.0 / 3.0) * std::numbers::pi * p.radius * p.radius * p.radius / p.mass);
+    for (const ParticleSpec& p : particles) {
+        const double rho = local_air(model.world.air, model.room, p.position.y).density_kg_m3;
+        r.push_back(rho * (4.0 / 3.0) * std::numbers::pi * p.radius * p.radius * p.radius / p.mass);
+    }
     return r;
 }
 

@@ -1,5 +1,7 @@
 #include "physics/studies/advisor_terms.hpp"
 
+#include "physics/model/air_model.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -64,9 +66,51 @@ std::string buoyancy_note(const TermContext& c) {
     return ratio;
 }
 
+// The added mass is 1/2 rho V: half the density ratio, in units of the particle's own mass.
+std::string added_mass_note(const TermContext& c) {
+    const std::vector<double>& r = c.advice.density_ratio;
+    if (r.empty()) return {};
+    return fmt::format("added mass up to {:.3g} of the particle's mass", 0.5 * *std::max_element(r.begin(), r.end()));
+}
+
+// The ISA against constant air of the ISA's density and viscosity at the floor: what the thinning
+// over the room's height changes, whatever air the variant has (the altitude itself is the
+// base_altitude the user chose).
+Air isa_of(const Air& air) {
+    Air isa = air;
+    isa.model = AirModel::isa;
+    return isa;
+}
+bool isa_air(Model& m) { return set(m.world.air.model, AirModel::isa); }
+bool air_at_floor(Model& m) {
+    const Air floor = local_air(isa_of(m.world.air), m.room, m.room.floor_y());  // constant air
+    const Air& now = m.world.air;
+    if (now.model == AirModel::constant && now.density_kg_m3 == floor.density_kg_m3 && now.viscosity_pa_s == floor.viscosity_pa_s)
+        return false;
+    m.world.air = floor;
+    return true;
+}
+
+// A constant air thinner than the ISA's anywhere in the troposphere (a vacuum) is not a standard
+// day at any altitude: the ISA's thinning says nothing about it.
+const char* isa_not_applicable(const Model& m) {
+    if (m.world.air.model == AirModel::constant && m.world.air.density_kg_m3 < isa_density(max_base_altitude_m))
+        return "the air is thinner than the ISA's anywhere in the troposphere";
+    return nullptr;
+}
+
+std::string isa_note(const TermContext& c) {
+    const Air air = isa_of(c.variant.world.air);
+    const Room& room = c.variant.room;
+    const double floor = air_density_at(air, altitude_in_room(air, room, room.floor_y()));
+    const double ceiling = air_density_at(air, altitude_in_room(air, room, room.floor_y() + room.size.y));
+    return fmt::format("ISA density {:.4g} kg/m^3 at the floor ({:g} m), {:.2g}% less at the ceiling", floor,
+                       air.base_altitude_m, 100.0 * (1.0 - ceiling / floor));
+}
+
 // The rows, in the order of the verdicts and of the JSON's "runs": first each drag model against
 // the reference (the reference itself last, all zeros), then the toggles.
-const std::array<TermRow, 7> rows = {{
+const std::array<TermRow, 9> rows = {{
     {"no drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::none; },
      use_drag<DragModel::none>, use_reference_drag, nullptr, nullptr, false},
     {"linear drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::linear; },
@@ -80,6 +124,11 @@ const std::array<TermRow, 7> rows = {{
     {"buoyancy", TermKind::toggle, [](const Model& m) { return m.world.buoyancy; },
      [](Model& m) { return set(m.world.buoyancy, true); }, [](Model& m) { return set(m.world.buoyancy, false); },
      nullptr, buoyancy_note},
+    {"added mass", TermKind::toggle, [](const Model& m) { return m.world.added_mass; },
+     [](Model& m) { return set(m.world.added_mass, true); }, [](Model& m) { return set(m.world.added_mass, false); },
+     nullptr, added_mass_note},
+    {"ISA air (thinning with height)", TermKind::toggle, [](const Model& m) { return m.world.air.model == AirModel::isa; },
+     isa_air, air_at_floor, isa_not_applicable, isa_note},
     // Wind last: the runs of a scene with wind end with the calm run.
     {"wind", TermKind::toggle, [](const Model& m) { return m.world.wind.kind != WindKind::none; }, as_configured,
      [](Model& m) { return set(m.world.wind.kind, WindKind::none); }, wind_not_applicable, nullptr},

@@ -9,18 +9,9 @@
 // advisor runs each distinct model once (a builder that changes nothing reuses the variant's own
 // run; the same builder in two rows reuses its run).
 //
-// Adding a term is one row in term_table() (advisor_terms.cpp), e.g. for a boolean World field:
-//   {"added mass", TermKind::toggle,
-//    [](const Model& m) { return m.world.added_mass; },
-//    [](Model& m) { return set(m.world.added_mass, true); },    // measured: on
-//    [](Model& m) { return set(m.world.added_mass, false); },   // baseline: off
-//    nullptr,    // not_applicable: always judged
-//    nullptr},   // note: no extra clause
-// and for an enum, the air model (baseline: the constant air of World::air):
-//   {"air model (isa)", TermKind::toggle,
-//    [](const Model& m) { return m.world.air.model == AirModel::isa; },
-//    [](Model& m) { return set(m.world.air.model, AirModel::isa); },
-//    [](Model& m) { return set(m.world.air.model, AirModel::constant); }, nullptr, nullptr},
+// Adding a term is one row in term_table() (advisor_terms.cpp): a name, whether the variant has
+// it, the builders of the measured and the baseline model, and optionally why it cannot be judged
+// and an extra clause for its verdict (see the buoyancy and added-mass rows).
 // Toggle verdicts read "<name> matters: ...", "<name> is off but would change ...: turn it on".
 #pragma once
 

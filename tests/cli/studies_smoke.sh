@@ -43,7 +43,7 @@ assert v["reynolds_max"] > 1e3 and any("linear drag is wrong here" in s for s in
 PY
 
 # A vertical drop: judged by landing time and impact speed, for drag (on in the air variant, off
-# in the vacuum one) and for buoyancy (off in both: the foam ball is 0.64 of the air's density).
+# in the vacuum one), buoyancy and added mass (on: the foam ball is 0.64 of the air's density).
 "$bin" advise "$src/presets/feather_vs_ball.json" --json > "$tmp/feather.json"
 python3 - "$tmp/feather.json" <<'PY'
 import json, sys
@@ -58,10 +58,13 @@ assert lt["beyond_tolerance"] and lt["difference"] > 1.0 and lt["particle"] == 0
 assert drag["metrics"]["landing_point_m"]["difference"] < 1e-6, drag  # straight down either way
 assert air["cheapest_adequate_drag"] != "none"
 assert any(s.startswith("drag matters: landing time +") for s in air["verdicts"]), air["verdicts"]
-assert any(s.startswith("drag is off but would change landing time +") for s in vacuum["verdicts"]), vacuum["verdicts"]
+assert any(s.startswith("drag is off and would change nothing beyond tolerance") for s in vacuum["verdicts"]), vacuum["verdicts"]
 b = runs["buoyancy"]
-assert not b["in_scene"] and b["matters"] and abs(air["density_ratio"][0] - 0.641) < 1e-3, (b, air["density_ratio"])
-assert any(s.startswith("buoyancy is off but would change") and "rho_air/rho_particle = 0.641" in s for s in air["verdicts"])
+assert b["in_scene"] and b["matters"] and abs(air["density_ratio"][0] - 0.641) < 1e-3, (b, air["density_ratio"])
+assert any(s.startswith("buoyancy matters: landing time +") and "rho_air/rho_particle = 0.641" in s for s in air["verdicts"])
+m = runs["added mass"]
+assert m["in_scene"] and m["matters"] and m["metrics"]["landing_time_s"]["difference"] > 0.05, m
+assert any(s.startswith("added mass matters: landing time +") for s in air["verdicts"]), air["verdicts"]
 PY
 
 echo ok
