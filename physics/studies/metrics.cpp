@@ -83,11 +83,13 @@ Vec3 first_impact_position(const MetricsTracker& m, StepTraces& traces, const Ev
 void observe_step(MetricsTracker& m, const Simulation& sim, const std::vector<Event>& new_events,
                   double physics_seconds) {
     StepTraces traces(m, sim);
-    std::vector<std::uint32_t> impacted;  // particles with an impact in this step, sorted below
+    // Particles that hit the floor in this step, sorted below: the only impact that turns a falling
+    // particle upwards (friction on a side wall slows the vertical velocity, never reverses it).
+    std::vector<std::uint32_t> floor_hits;
     for (const Event& e : new_events) {
         if (e.particle >= m.particles.size()) continue;
         ParticleMetrics& p = m.particles[e.particle];
-        if (is_impact(e)) impacted.push_back(e.particle);
+        if (is_impact(e) && e.wall == Wall::y_min) floor_hits.push_back(e.particle);
         if (is_impact(e) && !p.first_impact_time) {
             p.first_impact_time = e.t;
             p.first_impact_wall = e.wall;
@@ -98,12 +100,12 @@ void observe_step(MetricsTracker& m, const Simulation& sim, const std::vector<Ev
         if ((e.kind == EventKind::rest || e.kind == EventKind::stop) && e.speed_out == 0.0)
             m.stopped_since[e.particle] = e.t;
     }
-    std::sort(impacted.begin(), impacted.end());
+    std::sort(floor_hits.begin(), floor_hits.end());
     const ParticleState& s = sim.state();
     const double t = sim.time();
-    // A step can hold a highest point inside when the particle rose at its start (or met a wall
-    // in it) and no longer rises fast at its end: |g| dt covers the lag of semi-implicit Euler's
-    // step-end velocity (a dt / 2) behind its trajectory's.
+    // A step can hold a highest point inside when the particle rose at its start (or bounced off
+    // the floor in it) and no longer rises fast at its end: |g| dt covers the lag of semi-implicit
+    // Euler's step-end velocity (a dt / 2) behind its trajectory's.
     const double turn_margin = glm::length(sim.model().world.gravity) * sim.dt();
     for (std::size_t i = 0; i < s.size(); ++i) {
         ParticleMetrics& p = m.particles[i];
@@ -112,7 +114,7 @@ void observe_step(MetricsTracker& m, const Simulation& sim, const std::vector<Ev
             p.apex_height = height;
             p.apex_time = t;
         }
-        const bool rose = m.prev[i].v.y > 0.0 || std::binary_search(impacted.begin(), impacted.end(), i);
+        const bool rose = m.prev[i].v.y > 0.0 || std::binary_search(floor_hits.begin(), floor_hits.end(), i);
         if (rose && s.vy[i] <= turn_margin)
             if (const StepTrace* trace = traces.of(static_cast<std::uint32_t>(i)); trace && trace->apex_y - m.floor_y > p.apex_height) {
                 p.apex_height = trace->apex_y - m.floor_y;
