@@ -124,7 +124,8 @@ TEST(MetricsFidelity, EveryStepReplaysBitForBit) {
             Simulation sim(model_for_variant(s, 0), initial_particles(s));
             std::size_t impacts = 0;
             for (int k = 0; k < 600; ++k) {
-                const StepStart before = step_start(sim, 0);
+                StepStart before;
+                update_step_start(before, sim, 0);
                 sim.step();
                 const std::optional<StepTrace> trace = replay_step(sim, 0, before);
                 ASSERT_TRUE(trace) << to_string(m) << (spin ? " spin" : "") << " step " << k;

@@ -5,11 +5,6 @@
 
 namespace pl {
 
-StepStart step_start(const Simulation& sim, std::size_t i) {
-    const ParticleState& s = sim.state();
-    return {s.position(i), s.velocity(i), s.resting[i], s.spin(i), sim.adaptive_step_hint(i)};
-}
-
 std::optional<StepTrace> replay_step(const Simulation& sim, std::size_t i, const StepStart& before) {
     const ParticleState& s = sim.state();
     if (sim.step_count() == 0 || i >= s.size() || s.frozen[i]) return std::nullopt;

@@ -21,8 +21,16 @@ struct StepStart {
     double step_hint = 0.0;  // adaptive Dormand-Prince's next internal step
 };
 
-// Particle i's state now, as the start of the next step.
-StepStart step_start(const Simulation& sim, std::size_t i);
+// Sets `start` to particle i's state now, as the start of the next step (the spin and the step
+// hint only where the model uses them: metrics do this for every particle after every step).
+inline void update_step_start(StepStart& start, const Simulation& sim, std::size_t i) {
+    const ParticleState& s = sim.state();
+    start.x = s.position(i);
+    start.v = s.velocity(i);
+    start.resting = s.resting[i];
+    if (spin_matters(sim.model())) start.spin = s.spin(i);
+    if (sim.model().integrator.method == Method::dopri5) start.step_hint = sim.adaptive_step_hint(i);
+}
 
 // The trace of particle i's latest step (the one that ended at sim.time()) replayed from
 // `before`; empty when no step was taken, the particle is frozen, or the replay does not end in

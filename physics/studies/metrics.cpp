@@ -38,7 +38,7 @@ MetricsTracker start_metrics(const Simulation& sim) {
     m.stopped_since.assign(n, std::nullopt);
     for (std::size_t i = 0; i < n; ++i) {
         m.start_position[i] = s.position(i);
-        m.prev[i] = step_start(sim, i);
+        update_step_start(m.prev[i], sim, i);
         m.particles[i].apex_height = s.y[i] - m.floor_y;
         m.particles[i].apex_time = sim.time();
     }
@@ -105,8 +105,13 @@ void observe_step(MetricsTracker& m, const Simulation& sim, const std::vector<Ev
     const double t = sim.time();
     // A step can hold a highest point inside when the particle rose at its start (or bounced off
     // the floor in it) and no longer rises fast at its end: |g| dt covers the lag of semi-implicit
-    // Euler's step-end velocity (a dt / 2) behind its trajectory's.
-    const double turn_margin = glm::length(sim.model().world.gravity) * sim.dt();
+    // Euler's step-end velocity (a dt / 2) behind its trajectory's. It is replayed when that point
+    // could beat the apex so far: it lies less than reach(v0, v1) above the step's ends (twice
+    // its speeds over its length, and a step of gravity), so the lower arcs after the first are
+    // not replayed.
+    const double g = glm::length(sim.model().world.gravity), h = sim.dt();
+    const double turn_margin = g * h;
+    auto reach = [&](const Vec3& v0, const Vec3& v1) { return 2.0 * h * (glm::length(v0) + glm::length(v1)) + g * h * h; };
     for (std::size_t i = 0; i < s.size(); ++i) {
         ParticleMetrics& p = m.particles[i];
         const double height = s.y[i] - m.floor_y;
@@ -114,13 +119,15 @@ void observe_step(MetricsTracker& m, const Simulation& sim, const std::vector<Ev
             p.apex_height = height;
             p.apex_time = t;
         }
-        const bool rose = m.prev[i].v.y > 0.0 || std::binary_search(floor_hits.begin(), floor_hits.end(), i);
-        if (rose && s.vy[i] <= turn_margin)
+        const StepStart& before = m.prev[i];
+        const bool rose = before.v.y > 0.0 || std::binary_search(floor_hits.begin(), floor_hits.end(), i);
+        if (rose && s.vy[i] <= turn_margin &&
+            std::max(before.x.y, s.y[i]) - m.floor_y + reach(before.v, s.velocity(i)) > p.apex_height)
             if (const StepTrace* trace = traces.of(static_cast<std::uint32_t>(i)); trace && trace->apex_y - m.floor_y > p.apex_height) {
                 p.apex_height = trace->apex_y - m.floor_y;
                 p.apex_time = trace->apex_t;
             }
-        m.prev[i] = step_start(sim, i);
+        update_step_start(m.prev[i], sim, i);
     }
     m.prev_time = t;
     m.prev_steps = sim.step_count();
