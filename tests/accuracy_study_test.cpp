@@ -155,6 +155,60 @@ TEST(AccuracyStudy, BounceTimeErrorsShrinkWithTheStep) {
     }
 }
 
+TEST(AccuracyStudy, RK4OrderIsFittedOnlyAboveTheReferencesFloor) {
+    // A looser Dormand-Prince reference (1e-9): RK4's errors reach its error (about 3e-10 m here)
+    // at dt = 2.5 ms. Fitted through every row the slope bends towards 0; the floor is measured
+    // (a second reference at 10x the tolerance) and the rows near it are left out.
+    const Scene scene = smooth_drag_scene();
+    AccuracyOptions o;
+    o.methods = {Method::rk4};
+    o.dts = {0.04, 0.02, 0.01, 0.005, 0.0025, 0.00125};
+    o.duration_s = 1.0;
+    o.reference_tolerance = 1e-9;
+    const AccuracyReport r = run_accuracy_study(scene, o);
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    EXPECT_GT(r.reference_error, 1e-11);
+    EXPECT_LT(r.reference_error, 1e-8);
+    ASSERT_EQ(r.orders.size(), 1u);
+    const MethodOrder& order = r.orders.front();
+    EXPECT_NEAR(order_of(r, Method::rk4), 4.0, 0.2);
+    EXPECT_GE(order.points, min_order_points);
+    EXPECT_LT(order.points, order.rows) << "the finest rows are at the floor";
+    EXPECT_FALSE(order.too_few_points);
+    EXPECT_TRUE(order.note().empty());
+    std::vector<double> dts, errors;  // every row: what the floor keeps out
+    for (const AccuracyRow& row : r.rows) {
+        dts.push_back(row.dt);
+        errors.push_back(row.position_error);
+        EXPECT_GT(row.error_floor, r.reference_error);  // plus the run's round-off
+    }
+    EXPECT_LT(*log_log_slope(dts, errors), 3.6);
+}
+
+TEST(AccuracyStudy, TooFewPointsAboveTheFloorGiveNoOrder) {
+    // Linear drag (k = 1/s) for 50 s: the transient has died out, RK4's end-point errors are
+    // round-off, growing with the number of steps (9e-10 m at dt = 2e-4 s, 5e-9 m at 1e-4 s,
+    // |x| = 500 m). A slope through them (-2.6 here) is no order of the method.
+    Scene scene = smooth_drag_scene();
+    scene.drag.model = DragModel::linear;
+    scene.drag.linear_b = 0.01;
+    scene.particles[0].mass = 0.01;
+    AccuracyOptions o;
+    o.methods = {Method::rk4};
+    o.dts = {0.2, 0.1, 0.05, 0.025, 2e-4, 1e-4};
+    o.duration_s = 50.0;
+    const AccuracyReport r = run_accuracy_study(scene, o);
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    EXPECT_NE(r.reference.find("closed form (linear drag"), std::string::npos) << r.reference;
+    ASSERT_EQ(r.orders.size(), 1u);
+    const MethodOrder& order = r.orders.front();
+    EXPECT_FALSE(order.observed) << *order.observed;
+    EXPECT_TRUE(order.too_few_points);
+    EXPECT_LT(order.points, min_order_points);
+    EXPECT_EQ(order.rows, 6u);
+    EXPECT_NE(order.note().find("too few points above the floor"), std::string::npos) << order.note();
+}
+
 TEST(AccuracyStudy, LogLogSlopeOfAPowerLaw) {
     const std::vector<double> x = {0.1, 0.2, 0.4, 0.8};
     std::vector<double> y;

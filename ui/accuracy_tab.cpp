@@ -96,9 +96,10 @@ void diagram(const AccuracyReport& r, const PanelState& p, const IntegratorSetti
         });
         std::string label = std::string(to_string(static_cast<Method>(key.first))) + (key.second ? " (tol)" : "");
         for (const MethodOrder& o : r.orders) {
-            if (key.second || o.method != static_cast<Method>(key.first) || !o.observed) continue;
+            if (key.second || o.method != static_cast<Method>(key.first)) continue;
             char order[48];
-            std::snprintf(order, sizeof order, "  order %.2f", *o.observed);
+            if (o.observed) std::snprintf(order, sizeof order, "  order %.2f", *o.observed);
+            else std::snprintf(order, sizeof order, "  order: too few points above the floor");
             label += order;
         }
         Curve c{label, {}, {}, series_color(key.first)};
@@ -184,15 +185,16 @@ void draw_accuracy_tab(LabSession& s) {
     if (ImGui::IsItemHovered()) {
         std::string orders;
         for (const MethodOrder& o : r.orders) {
-            char buf[96];
+            char buf[192];
             if (o.observed) std::snprintf(buf, sizeof buf, "\n  %s: %.2f (expected %d)", to_string(o.method), *o.observed, o.expected);
-            else std::snprintf(buf, sizeof buf, "\n  %s: - (expected %d)", to_string(o.method), o.expected);
+            else std::snprintf(buf, sizeof buf, "\n  %s: - (expected %d): %s", to_string(o.method), o.expected,
+                               o.note().c_str());
             orders += buf;
         }
         ImGui::SetTooltip("%s, particle %zu, errors at t = %.4g s\nreference: %s\nobserved order of the fixed-step methods "
-                          "(log-log slope of error vs dt):%s",
+                          "(log-log slope of error vs dt,\nover the errors at least %g x their floor: the reference's error %.3g m + round-off):%s",
                           r.variant_label.empty() ? "scene" : r.variant_label.c_str(), r.particle, r.duration_s,
-                          r.reference.c_str(), orders.c_str());
+                          r.reference.c_str(), order_floor_margin, r.reference_error, orders.c_str());
     }
     ImGui::SameLine();
     ImGui::RadioButton("diagram##acc", &p.accuracy_view, 0);

@@ -68,8 +68,7 @@ void start_tracking(PlotHistory& h, const Experiment& e) {
 void restart_metrics(MetricsTracker& m, std::size_t i, const Vec3& position, const Vec3& velocity, double t) {
     if (i >= m.particles.size()) return;
     m.start_position[i] = position;
-    m.prev_position[i] = position;
-    m.prev_velocity[i] = velocity;
+    m.prev[i] = {position, velocity};  // a replay of the step after it ends elsewhere: then not used
     m.particles[i] = ParticleMetrics{};
     m.particles[i].apex_height = position.y - m.floor_y;
     m.particles[i].apex_time = t;

@@ -10,6 +10,7 @@
 #include "physics/stepping/integrators.hpp"
 #include "physics/stepping/kernel.hpp"
 #include "physics/stepping/spin_contact.hpp"
+#include "physics/stepping/step_trace.hpp"
 
 #include <cmath>
 #include <vector>
@@ -24,6 +25,7 @@ struct StepContext {
     std::vector<Event>* events;
     AdaptiveStats* adaptive;
     std::uint64_t* contact_solves;
+    StepTrace* trace = nullptr;  // metrics' replay of a step only (step_trace.hpp)
 };
 
 struct ParticleStep {

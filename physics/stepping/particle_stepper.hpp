@@ -92,16 +92,19 @@ public:
                     if (s == s_hit) walls |= static_cast<std::uint8_t>(1u << w);
                 }
                 if (wall < 0) {
+                    if (c_.trace) [[unlikely]] trace_flight(p, t, remaining, on_parabola, seg);
                     p.y = end;
                     if (on_parabola) p.y.v -= (0.5 * h) * seg.a;  // u -> v
                     return true;
                 }
+                if (c_.trace) [[unlikely]] trace_flight(p, t, s_hit, on_parabola, seg);
                 if (s_hit > 0.0) p.y = on_parabola ? parabola(p.y, s_hit, seg) : flight(p, t, s_hit);
             }
             ++*c_.contact_solves;
             for (int w = 0; w < wall_count; ++w)
                 if (walls & (1u << w)) p.y.x[RoomBounds::axis(w)] = c_.room->contact_plane(w, p.radius);
             p.y.x = c_.room->clamp_inside(p.y.x, p.radius);
+            if (c_.trace) [[unlikely]] c_.trace->impact(t + s_hit, p.y.x);
             t += s_hit;
             remaining -= s_hit;
             seg_fresh = hit_walls(p, id, walls, t, remaining, h, seg);
@@ -166,6 +169,8 @@ private:
                 const double closest = turning_point(p.y, trial, w, p.radius, s);
                 if (closest > 0.0 && distance(closest) < 0.0) take_earliest(w, find_contact(distance, closest));
             }
+            if (c_.trace) [[unlikely]]
+                c_.trace->flight(t + done, theta_hit * s, [&](double q) { return trial.at(q / s); });
             if (wall >= 0) {
                 p.y = trial.at(theta_hit);
                 s_hit = std::min(h, done + theta_hit * s);
@@ -213,6 +218,21 @@ private:
 
     bool polynomial_position() const { return has_polynomial_position(c_.method); }
 
+    // A traced step (StepContext::trace): the flight from p.y at t over s on the step's own
+    // trajectory (step_trace.hpp), where the stepper is about to take it.
+    void trace_flight(const ParticleStep& p, double t, double s, bool on_parabola, const Derivative& seg) const {
+        if (polynomial_position()) {
+            const Vec3 a0 = on_parabola ? seg.a : f_(p.y.x, p.y.v, t).a;
+            // Semi-implicit Euler off its parabola (a step that reaches no wall): the parabola
+            // through the step's end point, of the velocity u0 = v0 + a0 s / 2.
+            const double u0 = staggered() && !on_parabola ? p.y.v.y + 0.5 * s * a0.y : p.y.v.y;
+            c_.trace->quadratic_flight(t, s, p.y.x.y, u0, position_kappa(c_.method) * a0.y);
+        } else {
+            ParticleStep start = p;
+            c_.trace->flight(t, s, [&](double q) { return flight(start, t, q); });
+        }
+    }
+
     // Whether the particle lies on a wall that presses it, with a normal velocity into it no
     // larger than the pressing acceleration gives in h: semi-implicit Euler's state of a particle
     // at rest on a wall (its velocity lags by a h / 2), which takes no impact on its parabola
@@ -234,39 +254,6 @@ private:
         if (polynomial_position())
             return polynomial_time_of_impact(*c_.room, wall, p.y, p.radius, position_kappa(c_.method), a0, h);
         return find_contact([&](double s) { return c_.room->distance(wall, flight(p, t, s).x, p.radius); }, h);
-    }
-
-    // Root of a wall distance d(s) on [0, h], d(h) < 0: bisection while the lower end is on the
-    // wall (the root could be at 0 or later), then Illinois regula falsi (Dahlquist & Bjorck),
-    // which converges superlinearly. Returns the end of the bracket at or just past the wall.
-    template <class Distance>
-    static double find_contact(const Distance& d, double h) {
-        double lo = 0.0, hi = h;
-        double f_lo = d(lo), f_hi = d(hi);
-        int side = 0;
-        for (int it = 0; it < 80 && hi - lo > 1e-15 * h; ++it) {
-            double s;
-            if (f_lo <= 0.0) {
-                s = 0.5 * (lo + hi);
-            } else {
-                s = lo + (hi - lo) * f_lo / (f_lo - f_hi);
-                if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
-            }
-            const double f_s = d(s);
-            if (f_s > 0.0) {
-                lo = s;
-                f_lo = f_s;
-                if (side == -1) f_hi *= 0.5;
-                side = -1;
-            } else {
-                hi = s;
-                f_hi = f_s;
-                if (side == 1 && f_lo > 0.0) f_lo *= 0.5;
-                side = 1;
-            }
-            if (f_s == 0.0) break;
-        }
-        return hi;
     }
 
     // The impact on `walls` (a bit mask: several where they are reached at the same instant) at

@@ -76,6 +76,8 @@ public:
     std::uint64_t dropped_events() const { return dropped_events_; }
     const std::vector<Warning>& warnings() const { return warnings_; }
     const ForceCounters& counters() const { return counters_; }
+    // Adaptive Dormand-Prince: the internal step particle i's next step starts with (0: none yet).
+    double adaptive_step_hint(std::size_t i) const { return i < adaptive_step_hint_.size() ? adaptive_step_hint_[i] : 0.0; }
 
     // Reynolds numbers the monitor has seen (at its samples, over the moving particles that are
     // neither on a wall nor frozen); lo > hi while none has flown, and without drag.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace pl {
 
@@ -107,7 +108,31 @@ void compare(AccuracyRow& row, const RunResult& run, const RunResult& ref) {
     if (matched > 0) row.bounce_time_error = worst;
 }
 
+// The fixed-step rows' order: a fit through the rows clearly above the floor, when there are enough.
+MethodOrder fit_order(Method method, const std::vector<AccuracyRow>& rows) {
+    MethodOrder mo;
+    mo.method = method;
+    mo.expected = method_order(method);
+    std::vector<double> dts, errors;
+    for (const AccuracyRow& row : rows) {
+        if (row.method != method || row.adaptive) continue;
+        ++mo.rows;
+        if (!(row.position_error >= order_floor_margin * row.error_floor)) continue;
+        dts.push_back(row.dt);
+        errors.push_back(row.position_error);
+    }
+    mo.points = dts.size();
+    mo.too_few_points = mo.points < min_order_points;
+    if (!mo.too_few_points) mo.observed = log_log_slope(dts, errors);
+    return mo;
+}
+
 }  // namespace
+
+std::string MethodOrder::note() const {
+    if (!too_few_points) return {};
+    return fmt::format("too few points above the floor ({} of {}, {} needed)", points, rows, min_order_points);
+}
 
 std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -199,21 +224,26 @@ AccuracyReport run_accuracy_study(const Scene& scene, const AccuracyOptions& o) 
     RunResult ref = run_once(ref_model, particle, outer_steps);
     report.reference_impacts = ref.impacts.size();
     report.reference = fmt::format("dopri5 adaptive, rtol = atol = {:g}", o.reference_tolerance);
-    double error_floor = 100.0 * o.reference_tolerance * (1.0 + glm::length(ref.x));
+    double reference_error = 0.0;  // m
     std::string name;
-    if (ref.impacts.empty()) {
-        if (const auto exact = closed_form(base, particle, duration, name)) {
-            ref.x = exact->first;
-            ref.v = exact->second;
-            report.reference = name;
-            error_floor = 1e-13 * (1.0 + glm::length(ref.x));
-        }
+    const auto exact = ref.impacts.empty() ? closed_form(base, particle, duration, name) : std::nullopt;
+    if (exact) {
+        ref.x = exact->first;
+        ref.v = exact->second;
+        report.reference = name;
+    } else {
+        // The reference's error, from a second reference at 10x its tolerance (file comment).
+        Model looser = ref_model;
+        looser.integrator.rtol = looser.integrator.atol = std::min(0.1, 10.0 * o.reference_tolerance);
+        reference_error = 0.1 * glm::length(run_once(looser, particle, outer_steps).x - ref.x);
     }
+    report.reference_error = reference_error;
+    // Round-off per step of a run (file comment).
+    const double round_off_per_step = std::numeric_limits<double>::epsilon() * (1.0 + glm::length(ref.x));
     tick();
 
     for (Method method : methods) {
         const bool over_tolerances = method == Method::dopri5 && !o.dopri5_fixed_step;
-        std::vector<double> order_dt, order_err;
         for (std::size_t i = 0; i < (over_tolerances ? tolerances.size() : dts.size()); ++i) {
             if (cancelled()) {
                 report.cancelled = true;
@@ -239,21 +269,11 @@ AccuracyReport run_accuracy_study(const Scene& scene, const AccuracyOptions& o) 
                 steps = steps_for(duration, dts[i]);
             }
             compare(row, run_once(m, particle, steps), ref);
-            if (!over_tolerances && row.position_error > error_floor) {
-                order_dt.push_back(row.dt);
-                order_err.push_back(row.position_error);
-            }
+            row.error_floor = reference_error + static_cast<double>(row.steps) * round_off_per_step;
             report.rows.push_back(row);
             tick();
         }
-        if (!over_tolerances) {
-            MethodOrder mo;
-            mo.method = method;
-            mo.expected = method_order(method);
-            mo.observed = log_log_slope(order_dt, order_err);
-            mo.points = order_dt.size();
-            report.orders.push_back(mo);
-        }
+        if (!over_tolerances) report.orders.push_back(fit_order(method, report.rows));
     }
     return report;
 }

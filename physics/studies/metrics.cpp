@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <unordered_map>
 #include <cmath>
 
 namespace pl {
@@ -32,48 +33,104 @@ MetricsTracker start_metrics(const Simulation& sim) {
     const std::size_t n = s.size();
     m.floor_y = sim.model().room.floor_y();
     m.start_position.resize(n);
-    m.prev_velocity.resize(n);
+    m.prev.resize(n);
     m.particles.resize(n);
     m.stopped_since.assign(n, std::nullopt);
     for (std::size_t i = 0; i < n; ++i) {
         m.start_position[i] = s.position(i);
-        m.prev_velocity[i] = s.velocity(i);
+        update_step_start(m.prev[i], sim, i);
         m.particles[i].apex_height = s.y[i] - m.floor_y;
         m.particles[i].apex_time = sim.time();
     }
-    m.prev_position = m.start_position;
     m.prev_time = sim.time();
+    m.prev_steps = sim.step_count();
     return m;
 }
 
+namespace {
+
+// The traces of the particles whose latest step is replayed, each replayed once, on demand.
+class StepTraces {
+public:
+    StepTraces(const MetricsTracker& m, const Simulation& sim)
+        : m_(m), sim_(sim), one_step_(sim.step_count() == m.prev_steps + 1) {}
+    const StepTrace* of(std::uint32_t i) {
+        auto found = traces_.find(i);
+        if (found == traces_.end())
+            found = traces_.emplace(i, one_step_ ? replay_step(sim_, i, m_.prev[i]) : std::nullopt).first;
+        return found->second ? &*found->second : nullptr;
+    }
+
+private:
+    const MetricsTracker& m_;
+    const Simulation& sim_;
+    const bool one_step_;
+    std::unordered_map<std::uint32_t, std::optional<StepTrace>> traces_;
+};
+
+// The first impact's position: located by the replayed step, or (no replay: the particle was
+// launched again within the step) the state before the step extrapolated linearly to it.
+Vec3 first_impact_position(const MetricsTracker& m, StepTraces& traces, const Event& e) {
+    if (const StepTrace* trace = traces.of(e.particle))
+        for (const StepTrace::Impact& hit : trace->impacts)
+            if (hit.t == e.t) return hit.x;
+    const StepStart& before = m.prev[e.particle];
+    return before.x + (e.t - m.prev_time) * before.v;
+}
+
+}  // namespace
+
 void observe_step(MetricsTracker& m, const Simulation& sim, const std::vector<Event>& new_events,
                   double physics_seconds) {
+    StepTraces traces(m, sim);
+    // Particles that hit the floor in this step, sorted below: the only impact that turns a falling
+    // particle upwards (friction on a side wall slows the vertical velocity, never reverses it).
+    std::vector<std::uint32_t> floor_hits;
     for (const Event& e : new_events) {
         if (e.particle >= m.particles.size()) continue;
         ParticleMetrics& p = m.particles[e.particle];
+        if (is_impact(e) && e.wall == Wall::y_min) floor_hits.push_back(e.particle);
         if (is_impact(e) && !p.first_impact_time) {
             p.first_impact_time = e.t;
             p.first_impact_wall = e.wall;
             p.first_impact_speed = e.speed_in;
-            const Vec3 at = m.prev_position[e.particle] + (e.t - m.prev_time) * m.prev_velocity[e.particle];
-            p.range_at_first_impact = horizontal_distance(at, m.start_position[e.particle]);
+            p.range_at_first_impact = horizontal_distance(first_impact_position(m, traces, e), m.start_position[e.particle]);
         }
         if (e.kind == EventKind::bounce && e.wall >= 0) ++p.bounces;
         if ((e.kind == EventKind::rest || e.kind == EventKind::stop) && e.speed_out == 0.0)
             m.stopped_since[e.particle] = e.t;
     }
+    std::sort(floor_hits.begin(), floor_hits.end());
     const ParticleState& s = sim.state();
     const double t = sim.time();
+    // A step can hold a highest point inside when the particle rose at its start (or bounced off
+    // the floor in it) and no longer rises fast at its end: |g| dt covers the lag of semi-implicit
+    // Euler's step-end velocity (a dt / 2) behind its trajectory's. It is replayed when that point
+    // could beat the apex so far: it lies less than reach(v0, v1) above the step's ends (twice
+    // its speeds over its length, and a step of gravity), so the lower arcs after the first are
+    // not replayed.
+    const double g = glm::length(sim.model().world.gravity), h = sim.dt();
+    const double turn_margin = g * h;
+    auto reach = [&](const Vec3& v0, const Vec3& v1) { return 2.0 * h * (glm::length(v0) + glm::length(v1)) + g * h * h; };
     for (std::size_t i = 0; i < s.size(); ++i) {
+        ParticleMetrics& p = m.particles[i];
         const double height = s.y[i] - m.floor_y;
-        if (height > m.particles[i].apex_height) {
-            m.particles[i].apex_height = height;
-            m.particles[i].apex_time = t;
+        if (height > p.apex_height) {
+            p.apex_height = height;
+            p.apex_time = t;
         }
-        m.prev_position[i] = s.position(i);
-        m.prev_velocity[i] = s.velocity(i);
+        const StepStart& before = m.prev[i];
+        const bool rose = before.v.y > 0.0 || std::binary_search(floor_hits.begin(), floor_hits.end(), i);
+        if (rose && s.vy[i] <= turn_margin &&
+            std::max(before.x.y, s.y[i]) - m.floor_y + reach(before.v, s.velocity(i)) > p.apex_height)
+            if (const StepTrace* trace = traces.of(static_cast<std::uint32_t>(i)); trace && trace->apex_y - m.floor_y > p.apex_height) {
+                p.apex_height = trace->apex_y - m.floor_y;
+                p.apex_time = trace->apex_t;
+            }
+        update_step_start(m.prev[i], sim, i);
     }
     m.prev_time = t;
+    m.prev_steps = sim.step_count();
     m.physics_seconds += physics_seconds;
 }
 

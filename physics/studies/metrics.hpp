@@ -1,7 +1,12 @@
 // Comparison metrics of each variant (time of flight, apex, range, bounces, time to rest, energy
-// lost, cost), measured from the recorded trajectory (the state after every step) and the event
-// stream. Every number can therefore be recomputed from the CLI's trajectory and events CSV
-// written with --every 1 (tests/cli/compare_matches_csv.sh does exactly that).
+// lost, cost), measured from the state after every step, the event stream and, for the apex and
+// the first impact, the step's own trajectory: a step in which a particle turns downwards or
+// first meets a wall is replayed for that particle with a trace (physics/stepping/step_replay.hpp),
+// which gives the highest point inside the step and the impact's located position, so both
+// converge with the method's order rather than with the step (an apex sampled at step ends is off
+// by up to dt / 2 in time). The other numbers can be recomputed from the CLI's trajectory and
+// events CSV written with --every 1 (tests/cli/compare_matches_csv.sh does, and checks the apex
+// and range against the step ends around them).
 //
 // Conventions: y is up; heights are measured from the floor (the room's lowest y), as in the
 // trajectory CSV; "horizontal" means the x-z plane.
@@ -10,6 +15,7 @@
 #include "physics/stepping/events.hpp"
 #include "physics/model/scene.hpp"
 #include "physics/stepping/simulation.hpp"
+#include "physics/stepping/step_replay.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -25,12 +31,14 @@ struct ParticleMetrics {
     std::optional<double> first_impact_time;
     int first_impact_wall = -1;
     std::optional<double> first_impact_speed;  // |v| just before the first impact, m/s
-    // Horizontal distance from the start to the first impact point. The impact lies inside a
-    // step; its horizontal position is the state before that step extrapolated linearly to the
-    // impact time (horizontal acceleration is drag/wind only, so the error is below
-    // |a_h| dt^2 / 2, about 1e-6 m at dt = 2 ms).
+    // Horizontal distance from the start to the first impact point: the impact's position as the
+    // stepper located it on the step's own trajectory (StepTrace::impacts).
     std::optional<double> range_at_first_impact;
-    double apex_height = 0.0;  // highest centre height over the floor among the recorded states
+    // Highest centre height over the floor, at the start, at the step ends or inside a step on the
+    // step's own trajectory (the vertex of the Euler/Verlet position polynomial, or where the
+    // vertical velocity of RK4 re-run with a shorter step / Dormand-Prince's dense output crosses
+    // zero), and when.
+    double apex_height = 0.0;
     double apex_time = 0.0;
     double final_range = 0.0;  // horizontal distance from the start to the last position
     std::size_t bounces = 0;   // bounce events (rebounds); the impact that ends in rest is not one
@@ -61,8 +69,9 @@ struct VariantMetrics {
 // (drain them once and share them with other consumers) and the wall time the step took.
 struct MetricsTracker {
     std::vector<Vec3> start_position;
-    std::vector<Vec3> prev_position, prev_velocity;  // state before the latest step
+    std::vector<StepStart> prev;  // state before the latest step (what a replay starts from)
     double prev_time = 0.0;
+    std::uint64_t prev_steps = 0;  // steps taken then: a replay reproduces one step only
     double floor_y = 0.0;
     std::vector<ParticleMetrics> particles;
     std::vector<std::optional<double>> stopped_since;  // time of the last event that left v == 0

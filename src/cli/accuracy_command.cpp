@@ -38,7 +38,7 @@ void print_csv(const AccuracyReport& r) {
     CsvWriter csv(std::cout);
     for (const char* h : {"method", "adaptive", "dt_s", "tol", "steps", "force_evaluations", "wall_s_per_simulated_s",
                           "position_error_m", "velocity_error_m_s", "bounce_time_error_s", "impacts", "impacts_matched",
-                          "reference_impacts", "observed_order"})
+                          "reference_impacts", "observed_order", "error_floor_m"})
         csv.field(h);
     csv.end_row();
     for (const AccuracyRow& row : r.rows) {
@@ -54,6 +54,7 @@ void print_csv(const AccuracyReport& r) {
         const std::optional<double> order = row.adaptive ? std::nullopt : order_of(r, row.method);
         if (order) csv.field(*order);
         else csv.field("");
+        csv.field(row.error_floor);
         csv.end_row();
     }
 }
@@ -66,6 +67,7 @@ void print_json(const AccuracyReport& r, const std::string& preset) {
     j["duration_s"] = r.duration_s;
     j["reference"] = r.reference;
     j["reference_impacts"] = r.reference_impacts;
+    j["reference_error_m"] = r.reference_error;
     Json rows = Json::array();
     for (const AccuracyRow& row : r.rows) {
         Json x;
@@ -77,6 +79,7 @@ void print_json(const AccuracyReport& r, const std::string& preset) {
         x["force_evaluations"] = row.force_evaluations;
         x["wall_s_per_simulated_s"] = row.wall_seconds_per_sim_second;
         x["position_error_m"] = row.position_error;
+        x["error_floor_m"] = row.error_floor;
         x["velocity_error_m_s"] = row.velocity_error;
         x["bounce_time_error_s"] = row.bounce_time_error ? Json(*row.bounce_time_error) : Json(nullptr);
         x["impacts"] = row.impacts;
@@ -91,6 +94,9 @@ void print_json(const AccuracyReport& r, const std::string& preset) {
         x["expected"] = o.expected;
         x["observed"] = o.observed ? Json(*o.observed) : Json(nullptr);
         x["points"] = o.points;
+        x["rows"] = o.rows;
+        x["too_few_points"] = o.too_few_points;
+        x["note"] = o.note();
         orders.push_back(x);
     }
     j["orders"] = orders;
@@ -101,23 +107,26 @@ void print_table(const AccuracyReport& r, const std::string& preset) {
     std::printf("%s, variant '%s', particle %zu, t = %g s\nreference: %s (%zu impacts)\n\n", preset.c_str(),
                 r.variant_label.c_str(), r.particle, r.duration_s, r.reference.c_str(), r.reference_impacts);
     Table t;
-    t.header = {"method", "dt s", "tol", "steps", "force evals", "wall s/sim s", "pos err m", "vel err m/s",
+    t.header = {"method", "dt s", "tol", "steps", "force evals", "wall s/sim s", "pos err m", "floor m", "vel err m/s",
                 "bounce t err s", "impacts"};
     for (const AccuracyRow& row : r.rows)
         t.rows.push_back({to_string(row.method), sig(row.dt), row.adaptive ? sig(row.tolerance, 2) : "-",
                           std::to_string(row.steps), std::to_string(row.force_evaluations),
-                          sig(row.wall_seconds_per_sim_second, 3), sig(row.position_error, 3), sig(row.velocity_error, 3),
+                          sig(row.wall_seconds_per_sim_second, 3), sig(row.position_error, 3), sig(row.error_floor, 2),
+                          sig(row.velocity_error, 3),
                           sig(row.bounce_time_error, 3),
                           fmt::format("{}/{}", row.impacts_matched, r.reference_impacts)});
     t.print();
-    std::printf("\nobserved order (least-squares slope of log position error vs log dt)\n");
+    std::printf("\nobserved order (least-squares slope of log position error vs log dt over the rows whose error is at\n"
+                "least %g x their floor: the reference's error, %s m, plus the run's round-off, steps x eps x (1 + |x|))\n",
+                order_floor_margin, sig(r.reference_error, 3).c_str());
     Table o;
-    o.header = {"method", "expected", "observed", "points"};
+    o.header = {"method", "expected", "observed", "points", "note"};
     for (const MethodOrder& m : r.orders)
-        o.rows.push_back({to_string(m.method), std::to_string(m.expected), sig(m.observed, 3), std::to_string(m.points)});
+        o.rows.push_back({to_string(m.method), std::to_string(m.expected), sig(m.observed, 3),
+                          fmt::format("{}/{}", m.points, m.rows), m.note()});
     o.print();
-    std::printf("\nimpacts: matched in order (same wall) / in the reference. Errors at the reference's accuracy are left\n"
-                "out of the order fit.\n");
+    std::printf("\nimpacts: matched in order (same wall) / in the reference. points: rows above the floor / rows.\n");
 }
 
 int accuracy(const AccuracyCliOptions& o) {

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # The comparison metrics equal what an independent reader computes from the trajectory and
-# events CSV of the same run: apex, bounces, time of flight, range at the first impact, time to
-# rest and the final range.
+# events CSV of the same run: bounces, time of flight, time to rest and the final range. The apex
+# and the range at the first impact are measured on the step's own trajectory (inside a step), so
+# they lie within what a step can add to the recorded step ends: the apex at or above the highest
+# recorded height by less than |a| dt^2 / 8 (a parabola between two step ends), the range within
+# |a_h| dt^2 / 2 of the state before the impact's step extrapolated linearly to it.
 set -euo pipefail
 bin=$1 src=$2
 tmp=$(mktemp -d)
@@ -22,8 +25,11 @@ for v in c["variants"]:
     evs = [e for e in events if e["variant_index"] == index and e["particle"] == "0"]
     assert all(r["variant"] == label for r in rows + evs), label
     assert rows, label
-    # Apex: highest height among the recorded states (every step).
-    assert max(float(r["height_m"]) for r in rows) == m["apex_height_m"], (label, m["apex_height_m"])
+    dt = float(rows[1]["t_s"]) - float(rows[0]["t_s"])
+    bound = 50.0 * dt * dt  # |a| up to 100 m/s^2 (gravity and drag of these presets: far less)
+    # Apex: at or above the highest recorded height (every step), by what a step can rise.
+    recorded = max(float(r["height_m"]) for r in rows)
+    assert recorded <= m["apex_height_m"] <= recorded + bound, (label, recorded, m["apex_height_m"])
     # Bounces: rebound events on a wall.
     assert sum(1 for e in evs if e["kind"] == "bounce" and e["wall"]) == m["bounces"], label
     impacts = [e for e in evs if e["kind"] in ("bounce", "rest") and e["wall"]]
@@ -33,12 +39,12 @@ for v in c["variants"]:
         assert impacts[0]["wall"] == m["first_impact_wall"]
         # The state before the step of the impact, extrapolated to it.
         before = max((r for r in rows if float(r["t_s"]) < t_hit), key=lambda r: float(r["t_s"]))
-        dt = t_hit - float(before["t_s"])
-        x = float(before["x_m"]) + dt * float(before["vx_m_s"])
-        z = float(before["z_m"]) + dt * float(before["vz_m_s"])
+        s = t_hit - float(before["t_s"])
+        x = float(before["x_m"]) + s * float(before["vx_m_s"])
+        z = float(before["z_m"]) + s * float(before["vz_m_s"])
         r0 = rows[0]
         rng = math.hypot(x - float(r0["x_m"]), z - float(r0["z_m"]))
-        assert abs(rng - m["range_at_first_impact_m"]) < 1e-9, (label, rng, m["range_at_first_impact_m"])
+        assert abs(rng - m["range_at_first_impact_m"]) <= bound + 1e-12, (label, rng, m["range_at_first_impact_m"])
     else:
         assert m["time_of_flight_s"] is None
     last = rows[-1]
