@@ -155,6 +155,30 @@ TEST(AccuracyStudy, BounceTimeErrorsShrinkWithTheStep) {
     }
 }
 
+TEST(AccuracyStudy, TheReferenceBouncesAsOftenAsTheMethodsOverALongRun) {
+    // A ball bouncing to rest in a 2 m room over 8 s. The reference's rest test works per outer
+    // step (a rebound whose whole series of bounces would end within the step rests): with the
+    // whole run as one outer step it rested at its third impact while RK4 bounced 20 times.
+    Scene scene;
+    scene.room.size = {2, 2, 2};
+    scene.contact.restitution = 0.8;
+    scene.contact.friction = 0.0;
+    scene.particles = {{{0, 0.5, 0}, {0.3, 0, 0}, 0.1, 0.05}};
+    scene.integrator.dt = 0.002;
+    AccuracyOptions o;
+    o.methods = {Method::rk4};
+    o.duration_s = 8.0;
+    const AccuracyReport r = run_accuracy_study(scene, o);
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    EXPECT_GE(r.reference_impacts, 15u);
+    for (const AccuracyRow& row : r.rows) {
+        EXPECT_EQ(row.impacts, r.reference_impacts) << "dt " << row.dt;
+        ASSERT_TRUE(row.bounce_time_error);
+        EXPECT_LT(*row.bounce_time_error, 1e-6) << "dt " << row.dt;  // RK4 is exact for constant gravity
+        EXPECT_LT(row.position_error, 1e-6) << "dt " << row.dt;
+    }
+}
+
 TEST(AccuracyStudy, RK4OrderIsFittedOnlyAboveTheReferencesFloor) {
     // A looser Dormand-Prince reference (1e-9): RK4's errors reach its error (about 3e-10 m here)
     // at dt = 2.5 ms. Fitted through every row the slope bends towards 0; the floor is measured

@@ -40,7 +40,9 @@ struct AccuracyOptions {
     // false) instead of over the tolerance ladder.
     bool dopri5_fixed_step = false;
     // Outer step of the adaptive runs (dopri5 over tolerances, and the reference); 0: the whole
-    // duration in one outer step, so the error control alone sets the internal step size.
+    // duration in one outer step, so the error control alone sets the internal step size, unless
+    // the reference reaches a wall: rest is decided per outer step (a rebound whose whole series of
+    // bounces would end within the step rests), so then the variant's own dt.
     double adaptive_outer_dt_s = 0.0;
     double reference_tolerance = 1e-12;
     std::function<void(double fraction)> progress;  // called from the running thread
