@@ -63,7 +63,7 @@ void draw_variants_section(LabSession& s) {
     if (ImGui::Button(n == 0 ? "Add variants" : "Add")) {
         ed.apply([](Scene& sc) {
             // The first variant added also keeps the scene itself as the baseline.
-            if (sc.variants.empty()) sc.variants.push_back(Variant{"baseline", {}, {}, {}, {}, {}});
+            if (sc.variants.empty()) sc.variants.push_back(Variant{"baseline", {}, {}, {}, {}, {}, {}});
             Variant added;
             added.label = unique_label(sc, "variant");
             sc.variants.push_back(added);

@@ -47,6 +47,9 @@ struct ParticleState {
     StateArray<double> dissipated_bounce, dissipated_friction, dissipated_drag, wind_work;
     StateArray<double> dissipated_rolling;  // by rolling resistance (contact.spin)
     StateArray<double> initial_energy;  // KE + spin KE + PE at t = 0
+    // Energy the particle-particle impulses gave each particle (< 0 in sum: what they dissipate).
+    // Allocated only where collisions are enabled (empty otherwise; resize leaves it alone).
+    StateArray<double> collision_work;
 
     std::size_t size() const { return x.size(); }
     Vec3 position(std::size_t i) const { return {x[i], y[i], z[i]}; }

@@ -38,6 +38,10 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
     warned_.assign(particles.size(), 0);
     if (model_.integrator.method == Method::dopri5) adaptive_step_hint_.assign(particles.size(), 0.0);
     kernel_ = pick_kernel(model_, kernel_choice_);
+    if (model_.collisions.enabled) {
+        collisions_ = std::make_unique<collide::CollisionPass>(particles.size());
+        state_.collision_work.assign(particles.size(), 0.0);
+    }
     if (dt() > no_rest_dt(model_))
         for (int w = 0; w < wall_count; ++w)
             if (glm::dot(model_.world.gravity, RoomBounds::inward_normal(w)) < 0.0)
@@ -58,10 +62,12 @@ void Simulation::step_n(std::uint64_t n) {
     const std::uint64_t period = monitor_period();
     while (n > 0) {
         const std::uint64_t to_sample = period - steps_ % period;
-        const std::uint64_t k = std::min({n, to_sample, steps_per_kernel_call});
+        // With collisions, the pass follows every step: one step per kernel call.
+        const std::uint64_t k = collisions_ ? 1 : std::min({n, to_sample, steps_per_kernel_call});
         const std::size_t first = events_.size();
         const std::uint64_t dropped = dropped_events_;
-        kernel_(context(), static_cast<std::uint32_t>(k));
+        if (collisions_) collide_step();
+        else kernel_(context(), static_cast<std::uint32_t>(k));
         // Events the cap dropped during the call were the oldest: the new ones start that much earlier.
         if (no_rest_floors_) watch_rest(first - std::min<std::uint64_t>(first, dropped_events_ - dropped));
         monitor();
@@ -93,8 +99,20 @@ void Simulation::run_until(double t) {
     if (static_cast<double>(steps_) < target) step_n(static_cast<std::uint64_t>(target) - steps_);
 }
 
+void Simulation::collide_step() {
+    collisions_->begin_step(state_);
+    kernel_(context(), 1);
+    collisions_last_step_ = collisions_->end_step(state_, model_, dt());
+    collisions_total_ += collisions_last_step_;
+    for (const std::uint32_t i : collisions_->moved()) release_from_walls(i, state_.velocity(i));
+}
+
 void Simulation::set_velocity(std::size_t i, const Vec3& v) {
     state_.set_velocity(i, v);
+    release_from_walls(i, v);
+}
+
+void Simulation::release_from_walls(std::size_t i, const Vec3& v) {
     // Walls the new velocity points away from no longer hold the particle; walls it points
     // into keep it resting with the normal component removed on the next step.
     for (int w = 0; w < wall_count; ++w) {

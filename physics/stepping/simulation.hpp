@@ -3,6 +3,7 @@
 // enable (drag, wind) are compiled out of the stepping kernel and never evaluated.
 #pragma once
 
+#include "physics/collide/collision_pass.hpp"
 #include "physics/model/drag.hpp"
 #include "physics/model/scene.hpp"
 #include "physics/model/wind.hpp"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,6 +78,10 @@ public:
     std::uint64_t dropped_events() const { return dropped_events_; }
     const std::vector<Warning>& warnings() const { return warnings_; }
     const ForceCounters& counters() const { return counters_; }
+    // Particle-particle collisions (model().collisions.enabled): impulses applied in the last step
+    // and since the start. Both stay 0 without collisions.
+    std::uint64_t collisions_last_step() const { return collisions_last_step_; }
+    std::uint64_t collisions_total() const { return collisions_total_; }
 
     // Reynolds numbers the monitor has seen (at its samples, over the moving particles that are
     // neither on a wall nor frozen); lo > hi while none has flown, and without drag.
@@ -95,6 +101,9 @@ private:
     // (a wall gravity presses on) in the events from `first` on, when the model's dt is in it.
     void watch_rest(std::size_t first);
     std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
+    // Walls that velocity v points away from stop holding particle i (a kick or a collision).
+    void release_from_walls(std::size_t i, const Vec3& v);
+    void collide_step();  // one kernel step followed by the collision pass
 
     Model model_;
     WindField wind_;
@@ -114,6 +123,8 @@ private:
     double max_stiffness_ = 0.0;
     std::vector<MonitorScan> scans_;  // one per particle range, kept from sample to sample
     std::vector<double> adaptive_step_hint_;  // dopri5: last accepted internal step per particle
+    std::unique_ptr<collide::CollisionPass> collisions_;  // only where model().collisions.enabled
+    std::uint64_t collisions_last_step_ = 0, collisions_total_ = 0;
 };
 
 }  // namespace pl

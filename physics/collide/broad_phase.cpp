@@ -1,0 +1,96 @@
+#include "physics/collide/broad_phase.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+
+namespace pl::collide {
+
+void SweptBoxes::resize(std::size_t n) {
+    for (int k = 0; k < 3; ++k) {
+        lo[k].resize(n);
+        hi[k].resize(n);
+    }
+}
+
+double SweptBoxes::extent(std::uint32_t i) const {
+    return std::max({hi[0][i] - lo[0][i], hi[1][i] - lo[1][i], hi[2][i] - lo[2][i]});
+}
+
+std::size_t BroadPhase::bucket_of(std::int64_t ix, std::int64_t iy, std::int64_t iz) const {
+    // Teschner et al. 2003 ("Optimized spatial hashing for collision detection of deformable
+    // objects"): three large primes, xor, modulo the table size (a power of two here).
+    const auto h = static_cast<std::uint64_t>(ix) * 73856093u ^ static_cast<std::uint64_t>(iy) * 19349663u ^
+                   static_cast<std::uint64_t>(iz) * 83492791u;
+    return static_cast<std::size_t>(h & (bucket_start_.size() - 2));
+}
+
+void BroadPhase::build_grid(const SweptBoxes& boxes) {
+    const std::size_t m = boxes.ids.size();
+    extents_.resize(m);
+    for (std::size_t k = 0; k < m; ++k) extents_[k] = boxes.extent(boxes.ids[k]);
+    std::nth_element(extents_.begin(), extents_.begin() + static_cast<std::ptrdiff_t>(m / 2), extents_.end());
+    cell_ = 2.0 * extents_[m / 2];  // > 0: every box holds a sphere of positive radius
+    small_.clear();
+    big_.clear();
+    for (const std::uint32_t i : boxes.ids) (boxes.extent(i) <= cell_ ? small_ : big_).push_back(i);
+    // Buckets: a power of two >= 2 m (few cells share one), plus the end marker.
+    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * small_.size(), 16));
+    bucket_start_.assign(buckets + 1, 0);
+    if (bucket_.size() < boxes.lo[0].size()) bucket_.resize(boxes.lo[0].size());
+    const double inv = 1.0 / cell_;
+    for (const std::uint32_t i : small_) {
+        auto cell = [&](int k) { return static_cast<std::int64_t>(std::floor(0.5 * (boxes.lo[k][i] + boxes.hi[k][i]) * inv)); };
+        bucket_[i] = static_cast<std::uint32_t>(bucket_of(cell(0), cell(1), cell(2)));
+        ++bucket_start_[bucket_[i] + 1];
+    }
+    for (std::size_t b = 1; b <= buckets; ++b) bucket_start_[b] += bucket_start_[b - 1];
+    sorted_.resize(small_.size());
+    // Counting sort: each particle goes to the next free slot of its bucket (stable: ids order).
+    next_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
+    for (const std::uint32_t i : small_) sorted_[next_[bucket_[i]]++] = i;
+}
+
+void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {
+    pairs.clear();
+    big_.clear();
+    if (boxes.ids.size() < 2) return;
+    build_grid(boxes);
+    const double inv = 1.0 / cell_;
+    std::array<std::uint32_t, 27> near{};
+    for (const std::uint32_t i : small_) {
+        // A box no larger than a cell overlaps only boxes whose centres lie in the 27 cells around
+        // its own centre's cell; each bucket is scanned once even when cells share it.
+        std::int64_t c[3];
+        for (int k = 0; k < 3; ++k) c[k] = static_cast<std::int64_t>(std::floor(0.5 * (boxes.lo[k][i] + boxes.hi[k][i]) * inv));
+        int n = 0;
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz)
+                    near[static_cast<std::size_t>(n++)] = static_cast<std::uint32_t>(bucket_of(c[0] + dx, c[1] + dy, c[2] + dz));
+        std::sort(near.begin(), near.end());
+        const auto last = std::unique(near.begin(), near.end());
+        for (auto b = near.begin(); b != last; ++b)
+            for (std::uint32_t k = bucket_start_[*b]; k < bucket_start_[*b + 1]; ++k) {
+                const std::uint32_t j = sorted_[k];
+                if (j > i && boxes.overlap(i, j)) pairs.push_back({i, j});
+            }
+    }
+    for (const std::uint32_t big : big_)
+        for (const std::uint32_t j : boxes.ids) {
+            const bool other_big = boxes.extent(j) > cell_;
+            if (j == big || (other_big && j < big) || !boxes.overlap(big, j)) continue;
+            pairs.push_back({std::min(big, j), std::max(big, j)});
+        }
+    std::sort(pairs.begin(), pairs.end());
+}
+
+void all_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {
+    pairs.clear();
+    for (std::size_t p = 0; p < boxes.ids.size(); ++p)
+        for (std::size_t q = p + 1; q < boxes.ids.size(); ++q)
+            if (boxes.overlap(boxes.ids[p], boxes.ids[q])) pairs.push_back({boxes.ids[p], boxes.ids[q]});
+}
+
+}  // namespace pl::collide
