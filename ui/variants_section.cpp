@@ -113,6 +113,12 @@ void draw_variants_section(LabSession& s) {
                                       [](SceneEditor& e, std::size_t v) {
                                           edit_contact_section(e, [v](Scene& sc) -> ContactSettings& { return *sc.variants[v].contact; });
                                       });
+    override_section<CollisionSettings>(ed, sel, "collisions", &Variant::collisions,
+                                        [](const Scene& sc) { return sc.collisions; }, [](SceneEditor& e, std::size_t v) {
+                                            edit_fields<CollisionSettings>(e, [v](Scene& sc) -> CollisionSettings& {
+                                                return *sc.variants[v].collisions;
+                                            });
+                                        });
     override_section<IntegratorSettings>(ed, sel, "integrator", &Variant::integrator,
                                          [](const Scene& sc) { return sc.integrator; }, [](SceneEditor& e, std::size_t v) {
                                              edit_integrator_section(e, [v](Scene& sc) -> IntegratorSettings& {
