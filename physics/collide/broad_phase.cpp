@@ -20,10 +20,21 @@ double SweptBoxes::extent(std::uint32_t i) const {
 
 std::size_t BroadPhase::bucket_of(std::int64_t ix, std::int64_t iy, std::int64_t iz) const {
     // Teschner et al. 2003 ("Optimized spatial hashing for collision detection of deformable
-    // objects"): three large primes, xor, modulo the table size (a power of two here).
-    const auto h = static_cast<std::uint64_t>(ix) * 73856093u ^ static_cast<std::uint64_t>(iy) * 19349663u ^
-                   static_cast<std::uint64_t>(iz) * 83492791u;
+    // objects"): three large primes and xor; then SplitMix64's finaliser, since the table size is
+    // a power of two and the low bits of the plain products repeat over neighbouring cells.
+    std::uint64_t h = static_cast<std::uint64_t>(ix) * 73856093u ^ static_cast<std::uint64_t>(iy) * 19349663u ^
+                      static_cast<std::uint64_t>(iz) * 83492791u;
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+    h ^= h >> 31;
     return static_cast<std::size_t>(h & (bucket_start_.size() - 2));
+}
+
+BroadPhase::Cell BroadPhase::cell_of(const SweptBoxes& boxes, std::uint32_t i) const {
+    const double inv = 1.0 / cell_;
+    Cell c;
+    for (int k = 0; k < 3; ++k) c[k] = static_cast<std::int64_t>(std::floor(0.5 * (boxes.lo[k][i] + boxes.hi[k][i]) * inv));
+    return c;
 }
 
 void BroadPhase::build_grid(const SweptBoxes& boxes) {
@@ -39,10 +50,10 @@ void BroadPhase::build_grid(const SweptBoxes& boxes) {
     const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * small_.size(), 16));
     bucket_start_.assign(buckets + 1, 0);
     if (bucket_.size() < boxes.lo[0].size()) bucket_.resize(boxes.lo[0].size());
-    const double inv = 1.0 / cell_;
+    if (cell_of_.size() < boxes.lo[0].size()) cell_of_.resize(boxes.lo[0].size());
     for (const std::uint32_t i : small_) {
-        auto cell = [&](int k) { return static_cast<std::int64_t>(std::floor(0.5 * (boxes.lo[k][i] + boxes.hi[k][i]) * inv)); };
-        bucket_[i] = static_cast<std::uint32_t>(bucket_of(cell(0), cell(1), cell(2)));
+        cell_of_[i] = cell_of(boxes, i);
+        bucket_[i] = static_cast<std::uint32_t>(bucket_of(cell_of_[i][0], cell_of_[i][1], cell_of_[i][2]));
         ++bucket_start_[bucket_[i] + 1];
     }
     for (std::size_t b = 1; b <= buckets; ++b) bucket_start_[b] += bucket_start_[b - 1];
@@ -57,25 +68,23 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {
     big_.clear();
     if (boxes.ids.size() < 2) return;
     build_grid(boxes);
-    const double inv = 1.0 / cell_;
-    std::array<std::uint32_t, 27> near{};
     for (const std::uint32_t i : small_) {
         // A box no larger than a cell overlaps only boxes whose centres lie in the 27 cells around
-        // its own centre's cell; each bucket is scanned once even when cells share it.
-        std::int64_t c[3];
-        for (int k = 0; k < 3; ++k) c[k] = static_cast<std::int64_t>(std::floor(0.5 * (boxes.lo[k][i] + boxes.hi[k][i]) * inv));
-        int n = 0;
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz)
-                    near[static_cast<std::size_t>(n++)] = static_cast<std::uint32_t>(bucket_of(c[0] + dx, c[1] + dy, c[2] + dz));
-        std::sort(near.begin(), near.end());
-        const auto last = std::unique(near.begin(), near.end());
-        for (auto b = near.begin(); b != last; ++b)
-            for (std::uint32_t k = bucket_start_[*b]; k < bucket_start_[*b + 1]; ++k) {
-                const std::uint32_t j = sorted_[k];
-                if (j > i && boxes.overlap(i, j)) pairs.push_back({i, j});
-            }
+        // its own centre's cell. Cells sharing a bucket are told apart by their coordinates, so
+        // each neighbour is met once even when a bucket is scanned for two cells.
+        const Cell& c = cell_of_[i];
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                    const Cell n{c[0] + dx, c[1] + dy, c[2] + dz};
+                    const std::size_t b = bucket_of(n[0], n[1], n[2]);
+                    for (std::uint32_t k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k) {
+                        const std::uint32_t j = sorted_[k];
+                        const Cell& cj = cell_of_[j];
+                        if (j > i && cj[0] == n[0] && cj[1] == n[1] && cj[2] == n[2] && boxes.overlap(i, j))
+                            pairs.push_back({i, j});
+                    }
+                }
     }
     for (const std::uint32_t big : big_)
         for (const std::uint32_t j : boxes.ids) {

@@ -8,6 +8,7 @@
 // codes (Green, "Particle Simulation using CUDA", 2010: hash, sort by cell, scan neighbours).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -45,12 +46,15 @@ public:
     std::size_t big_count() const { return big_.size(); }  // particles tested against all, last call
 
 private:
+    using Cell = std::array<std::int64_t, 3>;
+    Cell cell_of(const SweptBoxes& boxes, std::uint32_t i) const;  // of the box's centre
     void build_grid(const SweptBoxes& boxes);
     std::size_t bucket_of(std::int64_t ix, std::int64_t iy, std::int64_t iz) const;
 
     double cell_ = 0.0;
     std::vector<double> extents_;
     std::vector<std::uint32_t> small_, big_;
+    std::vector<Cell> cell_of_;                // per particle index: its grid cell (small ones)
     std::vector<std::uint32_t> bucket_;        // per particle index: its grid bucket (small ones)
     std::vector<std::uint32_t> bucket_start_;  // counting sort: first slot of each bucket, then the end
     std::vector<std::uint32_t> next_;          // counting sort: next free slot of each bucket
