@@ -61,6 +61,19 @@ void BroadPhase::build_grid(const SweptBoxes& boxes) {
     // Counting sort: each particle goes to the next free slot of its bucket (stable: ids order).
     next_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
     for (const std::uint32_t i : small_) sorted_[next_[bucket_[i]]++] = i;
+    slot_cell_.resize(sorted_.size());
+    for (int k = 0; k < 3; ++k) {
+        slot_lo_[k].resize(sorted_.size());
+        slot_hi_[k].resize(sorted_.size());
+    }
+    for (std::size_t slot = 0; slot < sorted_.size(); ++slot) {
+        const std::uint32_t i = sorted_[slot];
+        slot_cell_[slot] = cell_of_[i];
+        for (int k = 0; k < 3; ++k) {
+            slot_lo_[k][slot] = boxes.lo[k][i];
+            slot_hi_[k][slot] = boxes.hi[k][i];
+        }
+    }
 }
 
 void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {
@@ -68,21 +81,25 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {
     big_.clear();
     if (boxes.ids.size() < 2) return;
     build_grid(boxes);
-    for (const std::uint32_t i : small_) {
+    // Slot by slot, so that consecutive particles share their neighbour buckets in cache.
+    for (std::size_t a = 0; a < sorted_.size(); ++a) {
         // A box no larger than a cell overlaps only boxes whose centres lie in the 27 cells around
         // its own centre's cell. Cells sharing a bucket are told apart by their coordinates, so
         // each neighbour is met once even when a bucket is scanned for two cells.
-        const Cell& c = cell_of_[i];
+        const std::uint32_t i = sorted_[a];
+        const Cell c = slot_cell_[a];
         for (std::int64_t dx = -1; dx <= 1; ++dx)
             for (std::int64_t dy = -1; dy <= 1; ++dy)
                 for (std::int64_t dz = -1; dz <= 1; ++dz) {
                     const Cell n{c[0] + dx, c[1] + dy, c[2] + dz};
                     const std::size_t b = bucket_of(n[0], n[1], n[2]);
                     for (std::uint32_t k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k) {
-                        const std::uint32_t j = sorted_[k];
-                        const Cell& cj = cell_of_[j];
-                        if (j > i && cj[0] == n[0] && cj[1] == n[1] && cj[2] == n[2] && boxes.overlap(i, j))
-                            pairs.push_back({i, j});
+                        const Cell& cj = slot_cell_[k];
+                        if (sorted_[k] > i && cj[0] == n[0] && cj[1] == n[1] && cj[2] == n[2] &&
+                            slot_lo_[0][a] <= slot_hi_[0][k] && slot_lo_[0][k] <= slot_hi_[0][a] &&
+                            slot_lo_[1][a] <= slot_hi_[1][k] && slot_lo_[1][k] <= slot_hi_[1][a] &&
+                            slot_lo_[2][a] <= slot_hi_[2][k] && slot_lo_[2][k] <= slot_hi_[2][a])
+                            pairs.push_back({i, sorted_[k]});
                     }
                 }
     }

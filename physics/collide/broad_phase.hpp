@@ -59,6 +59,10 @@ private:
     std::vector<std::uint32_t> bucket_start_;  // counting sort: first slot of each bucket, then the end
     std::vector<std::uint32_t> next_;          // counting sort: next free slot of each bucket
     std::vector<std::uint32_t> sorted_;        // small particles ordered by bucket
+    // Per slot of sorted_: the particle's cell and box, so that a bucket's particles are read from
+    // consecutive memory and neighbouring particles are scanned one after the other.
+    std::vector<Cell> slot_cell_;
+    std::vector<double> slot_lo_[3], slot_hi_[3];
 };
 
 // The reference: every pair tested, O(n^2).

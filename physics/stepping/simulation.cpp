@@ -1,5 +1,6 @@
 #include "physics/stepping/simulation.hpp"
 
+#include "physics/collide/collision_pass.hpp"
 #include "physics/model/drag.hpp"
 #include "physics/model/model_check.hpp"
 #include "physics/model/terms/term_list.hpp"
@@ -48,6 +49,10 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
                 no_rest_floors_ |= static_cast<std::uint8_t>(1u << w);
     monitor();
 }
+
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 void Simulation::set_kernel(KernelChoice choice) {
     kernel_choice_ = choice;

@@ -3,7 +3,6 @@
 // enable (drag, wind) are compiled out of the stepping kernel and never evaluated.
 #pragma once
 
-#include "physics/collide/collision_pass.hpp"
 #include "physics/model/drag.hpp"
 #include "physics/model/scene.hpp"
 #include "physics/model/wind.hpp"
@@ -20,6 +19,10 @@
 
 namespace pl {
 
+namespace collide {
+class CollisionPass;
+}
+
 // What the monitor's scan found in a range of particles: the largest drag stiffness and, in
 // particle order, the particles that crossed a limit they have not been warned about yet.
 struct MonitorScan {
@@ -31,6 +34,11 @@ struct MonitorScan {
 class Simulation {
 public:
     Simulation(Model model, const std::vector<ParticleSpec>& particles);
+    // Out of line: the collision pass is an incomplete type here (its headers stay out of the
+    // many files that include this one).
+    ~Simulation();
+    Simulation(Simulation&&) noexcept;
+    Simulation& operator=(Simulation&&) noexcept;
 
     void step();  // exactly one fixed step of model().integrator.dt
     // n steps; the same result as n calls of step(). Large scenes advance each block of
