@@ -2,7 +2,7 @@
 // every method on one scene, and the wind kinds on a crowd, run a fixed number of steps; the
 // bits of the final state (positions, velocities, every ledger array, resting and frozen flags),
 // of the event list and of the warnings are hashed and compared with constants computed by the
-// engine before the force-term refactor (issue 24); presets added since are pinned as they came. A change that moves a single bit of any
+// engine before the force-term refactor (issue 24). A change that moves a single bit of any
 // trajectory fails here; such a change must say why in its commit and re-pin the constant.
 // Each case runs on one thread one step per call, and on two threads through step_n (several
 // steps per kernel call): both must give the pinned hash.
