@@ -65,8 +65,8 @@ void CollisionPass::touch(std::uint32_t i) {
 }
 
 void CollisionPass::resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin) {
-    const ImpulseResult r =
-        sphere_impulse(body_of(s, hit.a), body_of(s, hit.b), hit.n, m.collisions.restitution, m.collisions.friction, spin);
+    const CollisionSettings& c = m.collisions;
+    const ImpulseResult r = sphere_impulse(body_of(s, hit.a), body_of(s, hit.b), hit.n, c.restitution, c.friction, spin);
     for (const auto& [i, dv, dw] : {std::tuple{hit.a, r.dv_a, r.dw_a}, std::tuple{hit.b, r.dv_b, r.dw_b}}) {
         path_start_[i] = at(i, hit.t);
         path_time_[i] = hit.t;
@@ -89,7 +89,8 @@ void CollisionPass::remove_overlaps(ParticleState& s) {
         const double overlap = contact - len - allowed_overlap * contact;
         if (!(overlap > 0.0) || !(len > 0.0)) continue;
         const double inv_a = 1.0 / s.mass[p.a], inv_b = 1.0 / s.mass[p.b];
-        const Vec3 push = (correction_share * overlap / (len * (inv_a + inv_b))) * d;
+        const double correction = std::min(correction_share * overlap, max_correction * contact);
+        const Vec3 push = (correction / (len * (inv_a + inv_b))) * d;
         s.set_position(p.a, s.position(p.a) - inv_a * push);
         s.set_position(p.b, s.position(p.b) + inv_b * push);
     }

@@ -27,9 +27,12 @@ public:
     // At most this many passes per step; contacts still closing after them are found again at the
     // start of the next step (as touching pairs, time of impact 0).
     static constexpr int max_passes = 64;
-    // Overlap removal: the share of an overlap corrected per step, and the overlap left alone
-    // (as a fraction of the pair's contact distance), so that resting contacts do not jitter.
+    // Overlap removal: the share of an overlap corrected per step, at most max_correction of the
+    // pair's contact distance per step (deep overlaps, e.g. from an emitter, open over several
+    // steps instead of throwing particles), and the overlap left alone (as a fraction of the
+    // contact distance), so that resting contacts do not jitter.
     static constexpr double correction_share = 0.8;
+    static constexpr double max_correction = 0.2;
     static constexpr double allowed_overlap = 1e-4;
 
     explicit CollisionPass(std::size_t particles);
