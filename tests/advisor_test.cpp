@@ -117,7 +117,7 @@ TEST(Advisor, WindWithoutDragHasNoEffectAndWindWithDragIsMeasured) {
     Scene scene = scene_with({{0, 0.5, 0}, {3, 4, 0}, 0.057, 0.033}, DragModel::none);
     scene.world.wind.kind = WindKind::constant;
     scene.world.wind.velocity = {5, 0, 0};
-    scene.variants = {{"no drag", {}, {}, {}, {}, {}}, {"quadratic", quadratic_drag(), {}, {}, {}, {}}};
+    scene.variants = {{"no drag", {}, {}, {}, {}, {}, {}}, {"quadratic", quadratic_drag(), {}, {}, {}, {}, {}}};
     const Advice a = advise(scene, {});
     ASSERT_EQ(a.variants.size(), 2u);
     EXPECT_TRUE(any_contains(a.variants[0].verdicts, "drag is off, so wind has no effect")) << joined(a.variants[0].verdicts);

@@ -51,6 +51,11 @@ std::uint64_t hash_result(const Simulation& sim) {
     // The rotation, where it takes part (only then: the hashes pinned before it existed stay).
     if (spin_matters(sim.model()))
         for (const auto* a : {&s.wx, &s.wy, &s.wz, &s.dissipated_rolling}) f.doubles(*a);
+    // The collisions' ledger and count, where they are on (only then: earlier pins stay).
+    if (sim.model().collisions.enabled) {
+        f.doubles(s.collision_work);
+        f.u64(sim.collisions_total());
+    }
     f.bytes(s.resting);
     f.bytes(s.frozen);
     f.u64(sim.events().size());
@@ -147,7 +152,12 @@ const Case preset_cases[] = {
     {"integrators.json", 5, 2500, 0x920f55b49777b5f2ull},
     {"launch_velocities.json", 0, 2500, 0xa642f164efb05db3ull},
     {"many_particles.json", 0, 500, 0xe368c08a6f71f7cbull},
+    {"newtons_cradle.json", 0, 2500, 0x98ad144f874df5f3ull},
+    {"newtons_cradle.json", 1, 2500, 0xacb5b4f7dfe93063ull},
+    {"newtons_cradle.json", 2, 2500, 0xf8cb045724cd4f5full},
     {"optimal_angle.json", 0, 2500, 0x2cac261951c0305eull},
+    {"pool_break.json", 0, 2500, 0x9eb835fcf04cf914ull},
+    {"pool_break.json", 1, 2500, 0xc993676b97588b97ull},
     {"restitution.json", 0, 2500, 0xc2830ef3be8674dbull},
     {"restitution.json", 1, 2500, 0xd2cbb1d69815f73aull},
     {"restitution.json", 2, 2500, 0x29bb291b5dd5ca29ull},

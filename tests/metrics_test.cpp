@@ -95,9 +95,9 @@ TEST(Metrics, DropBouncesAndTimeToRestMatchTheClosedForm) {
 TEST(Metrics, ApexAndRangeFallAsDragGrows) {
     // A ping-pong-like ball (2.7 g, r = 20 mm) thrown at 20 m/s: drag is several times its weight.
     Scene scene = throw_scene({14, 14, 0}, Method::rk4, 1e-3, 0.0027, 0.02);
-    scene.variants = {{"none", drag(DragModel::none), {}, {}, {}, {}},
-                      {"linear", drag(DragModel::linear), {}, {}, {}, {}},
-                      {"quadratic", drag(DragModel::quadratic), {}, {}, {}, {}}};
+    scene.variants = {{"none", drag(DragModel::none), {}, {}, {}, {}, {}},
+                      {"linear", drag(DragModel::linear), {}, {}, {}, {}, {}},
+                      {"quadratic", drag(DragModel::quadratic), {}, {}, {}, {}, {}}};
     const Comparison c = run_comparison(scene, lasting(4.0));
     ASSERT_TRUE(c.error.empty()) << c.error;
     ASSERT_EQ(c.variants.size(), 3u);
@@ -142,7 +142,7 @@ TEST(Metrics, DurationMustBeAWholeNumberOfEveryVariantsStep) {
     Scene scene = throw_scene({1, 1, 0}, Method::semi_implicit_euler, 0.002);
     IntegratorSettings coarse = scene.integrator;
     coarse.dt = 0.003;
-    scene.variants = {{"fine", {}, {}, {}, {}, {}}, {"coarse", {}, {}, {}, {}, coarse}};
+    scene.variants = {{"fine", {}, {}, {}, {}, {}, {}}, {"coarse", {}, {}, {}, {}, coarse, {}}};
     const DurationPlan ok = plan_duration(scene, 0.6);
     EXPECT_TRUE(ok.error.empty()) << ok.error;
     EXPECT_EQ(ok.base_steps, 300u);
@@ -157,7 +157,7 @@ TEST(Metrics, LockstepLeavesEveryVariantAtTheCommonTime) {
     Scene scene = throw_scene({1, 1, 0}, Method::semi_implicit_euler, 0.002);
     IntegratorSettings coarse = scene.integrator;
     coarse.dt = 0.006;
-    scene.variants = {{"fine", {}, {}, {}, {}, {}}, {"coarse", {}, {}, {}, {}, coarse}};
+    scene.variants = {{"fine", {}, {}, {}, {}, {}, {}}, {"coarse", {}, {}, {}, {}, coarse, {}}};
     const Comparison c = run_comparison(scene, lasting(0.6));
     ASSERT_TRUE(c.error.empty());
     EXPECT_EQ(c.variants[0].steps, 300u);

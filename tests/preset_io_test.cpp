@@ -259,7 +259,7 @@ TEST(PresetRoundTrip, SceneDiffNamesTheFirstDifferentFieldByItsPath) {
     // Guards the comparison the round-trip tests rely on: it walks every row, optional section and list.
     Scene a;
     a.particles.push_back(ParticleSpec{});
-    a.variants.push_back(Variant{"v", DragSettings{}, {}, {}, {}, {}});
+    a.variants.push_back(Variant{"v", DragSettings{}, {}, {}, {}, {}, {}});
     Scene b = a;
     EXPECT_EQ(scene_difference(a, b), "");
     b.world.wind.gust_seed = 2;

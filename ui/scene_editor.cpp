@@ -213,6 +213,7 @@ PL_EDIT_FIELDS(ParticleSpec)
 PL_EDIT_FIELDS(Emitter)
 PL_EDIT_FIELDS(Variant)
 PL_EDIT_FIELDS(IntegratorSettings)
+PL_EDIT_FIELDS(CollisionSettings)
 #undef PL_EDIT_FIELDS
 
 void edit_drag_section(SceneEditor& ed, const std::function<DragSettings&(Scene&)>& at) {

@@ -41,7 +41,8 @@ private:
 // The fields of a section, from its preset rows (physics/model/schema/): label, unit, tooltip
 // (help and bounds) and, where the section has an enumeration, only the fields it applies to.
 // `at` finds the section inside a scene. Instantiated for Scene (name, description), Room, World
-// (gravity), ParticleSpec, Emitter, Variant (label), IntegratorSettings and the sections below.
+// (gravity), ParticleSpec, Emitter, Variant (label), IntegratorSettings, CollisionSettings and the
+// sections below.
 template <class S>
 void edit_fields(SceneEditor& ed, const std::function<S&(Scene&)>& at);
 // One row of a section.

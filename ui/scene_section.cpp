@@ -80,6 +80,10 @@ void draw_scene_section(LabSession& s) {
         edit_contact_section(ed, [](Scene& sc) -> ContactSettings& { return sc.contact; });
         ImGui::TreePop();
     }
+    if (ImGui::TreeNode("Collisions")) {
+        edit_fields<CollisionSettings>(ed, [](Scene& sc) -> CollisionSettings& { return sc.collisions; });
+        ImGui::TreePop();
+    }
     if (ImGui::TreeNode("Integrator")) {
         edit_integrator_section(ed, [](Scene& sc) -> IntegratorSettings& { return sc.integrator; });
         ImGui::TreePop();

@@ -63,7 +63,7 @@ void draw_variants_section(LabSession& s) {
     if (ImGui::Button(n == 0 ? "Add variants" : "Add")) {
         ed.apply([](Scene& sc) {
             // The first variant added also keeps the scene itself as the baseline.
-            if (sc.variants.empty()) sc.variants.push_back(Variant{"baseline", {}, {}, {}, {}, {}});
+            if (sc.variants.empty()) sc.variants.push_back(Variant{"baseline", {}, {}, {}, {}, {}, {}});
             Variant added;
             added.label = unique_label(sc, "variant");
             sc.variants.push_back(added);
@@ -113,6 +113,12 @@ void draw_variants_section(LabSession& s) {
                                       [](SceneEditor& e, std::size_t v) {
                                           edit_contact_section(e, [v](Scene& sc) -> ContactSettings& { return *sc.variants[v].contact; });
                                       });
+    override_section<CollisionSettings>(ed, sel, "collisions", &Variant::collisions,
+                                        [](const Scene& sc) { return sc.collisions; }, [](SceneEditor& e, std::size_t v) {
+                                            edit_fields<CollisionSettings>(e, [v](Scene& sc) -> CollisionSettings& {
+                                                return *sc.variants[v].collisions;
+                                            });
+                                        });
     override_section<IntegratorSettings>(ed, sel, "integrator", &Variant::integrator,
                                          [](const Scene& sc) { return sc.integrator; }, [](SceneEditor& e, std::size_t v) {
                                              edit_integrator_section(e, [v](Scene& sc) -> IntegratorSettings& {

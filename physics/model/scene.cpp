@@ -11,7 +11,7 @@ std::size_t variant_count(const Scene& scene) {
 }
 
 Model model_for_variant(const Scene& scene, std::size_t variant) {
-    Model m{scene.name, scene.room, scene.world, scene.drag, scene.contact, scene.integrator};
+    Model m{scene.name, scene.room, scene.world, scene.drag, scene.contact, scene.integrator, scene.collisions};
     if (scene.variants.empty()) return m;
     const Variant& v = scene.variants.at(variant);
     m.label = v.label;
@@ -20,6 +20,7 @@ Model model_for_variant(const Scene& scene, std::size_t variant) {
     if (v.air) m.world.air = *v.air;
     if (v.contact) m.contact = *v.contact;
     if (v.integrator) m.integrator = *v.integrator;
+    if (v.collisions) m.collisions = *v.collisions;
     return m;
 }
 

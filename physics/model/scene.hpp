@@ -96,6 +96,13 @@ struct ContactSettings {
     double restitution_speed = 1.0;  // viscoelastic: the impact speed (m/s) at which e = restitution
 };
 
+// Particle-particle collisions (physics/collide/): off by default, and then no collision code runs.
+struct CollisionSettings {
+    bool enabled = false;
+    double restitution = 0.9;  // e on the pair's normal relative velocity, 0..1
+    double friction = 0.0;     // Coulomb mu between the two surfaces, >= 0
+};
+
 enum class Method { explicit_euler, semi_implicit_euler, velocity_verlet, rk4, dopri5, exponential };
 
 struct IntegratorSettings {
@@ -141,6 +148,7 @@ struct Variant {
     std::optional<Air> air;
     std::optional<ContactSettings> contact;
     std::optional<IntegratorSettings> integrator;
+    std::optional<CollisionSettings> collisions;
 };
 
 struct Scene {
@@ -150,6 +158,7 @@ struct Scene {
     World world;
     DragSettings drag;
     ContactSettings contact;
+    CollisionSettings collisions;
     IntegratorSettings integrator;
     std::vector<ParticleSpec> particles;
     std::optional<Emitter> emitter;
@@ -165,6 +174,7 @@ struct Model {
     DragSettings drag;
     ContactSettings contact;
     IntegratorSettings integrator;
+    CollisionSettings collisions;
 };
 
 std::size_t variant_count(const Scene& scene);  // >= 1

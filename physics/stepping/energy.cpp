@@ -26,6 +26,7 @@ EnergyBreakdown particle_energy(const ParticleState& s, std::size_t i, const Vec
     e.dissipated_friction = s.dissipated_friction[i];
     e.dissipated_drag = s.dissipated_drag[i];
     e.wind_work = s.wind_work[i];
+    e.collision_work = s.collision_work.empty() ? 0.0 : s.collision_work[i];
     e.initial = s.initial_energy[i];
     return e;
 }
@@ -42,6 +43,7 @@ EnergyBreakdown total_energy(const ParticleState& s, const Vec3& g, const Room& 
         sum.dissipated_friction += e.dissipated_friction;
         sum.dissipated_drag += e.dissipated_drag;
         sum.wind_work += e.wind_work;
+        sum.collision_work += e.collision_work;
         sum.initial += e.initial;
     }
     return sum;

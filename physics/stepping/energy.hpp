@@ -1,5 +1,7 @@
-// Energy bookkeeping: E0 + wind work = KE + spin KE + PE + dissipated (bounce, friction, drag,
-// rolling) + residual. With added mass, KE = 1/2 (m + m_a) v^2 and PE = m g h (terms/air_column.hpp).
+// Energy bookkeeping: E0 + wind work + collision work = KE + spin KE + PE + dissipated (bounce,
+// friction, drag, rolling) + residual. With added mass, KE = 1/2 (m + m_a) v^2 and PE = m g h
+// (terms/air_column.hpp). The collision work moves energy between particles and, summed over all
+// of them, is minus what the collisions dissipated.
 // The residual is the integrator's own energy error.
 #pragma once
 
@@ -13,9 +15,10 @@ struct EnergyBreakdown {
     double dissipated_bounce = 0, dissipated_friction = 0, dissipated_drag = 0;
     double dissipated_rolling = 0;  // by rolling resistance
     double wind_work = 0;
+    double collision_work = 0;  // given by particle-particle impulses (collisions.enabled)
     double initial = 0;
     double residual() const {
-        return initial + wind_work -
+        return initial + wind_work + collision_work -
                (kinetic + spin + potential + dissipated_bounce + dissipated_friction + dissipated_drag + dissipated_rolling);
     }
     double total_mechanical() const { return kinetic + spin + potential; }

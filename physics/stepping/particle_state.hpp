@@ -50,6 +50,9 @@ struct ParticleState {
     // The inertial mass at the particle's position: m, or m + 1/2 rho V with added mass (rho the
     // air's at its height, physics/model/air_model.hpp); the kinetic energy is 1/2 this v^2.
     StateArray<double> inertial_mass;
+    // Energy the particle-particle impulses gave each particle (< 0 in sum: what they dissipate).
+    // Allocated only where collisions are enabled (empty otherwise; resize leaves it alone).
+    StateArray<double> collision_work;
 
     std::size_t size() const { return x.size(); }
     Vec3 position(std::size_t i) const { return {x[i], y[i], z[i]}; }

@@ -1,6 +1,7 @@
 #include "physics/stepping/simulation.hpp"
 
 #include "physics/model/air_model.hpp"
+#include "physics/collide/collision_pass.hpp"
 #include "physics/model/drag.hpp"
 #include "physics/model/model_check.hpp"
 #include "physics/model/terms/term_list.hpp"
@@ -43,12 +44,20 @@ Simulation::Simulation(Model model, const std::vector<ParticleSpec>& particles)
     warned_.assign(particles.size(), 0);
     if (model_.integrator.method == Method::dopri5) adaptive_step_hint_.assign(particles.size(), 0.0);
     kernel_ = pick_kernel(model_, kernel_choice_);
+    if (model_.collisions.enabled) {
+        collisions_ = std::make_unique<collide::CollisionPass>(particles.size());
+        state_.collision_work.assign(particles.size(), 0.0);
+    }
     if (dt() > no_rest_dt(model_))
         for (int w = 0; w < wall_count; ++w)
             if (glm::dot(model_.world.gravity, RoomBounds::inward_normal(w)) < 0.0)
                 no_rest_floors_ |= static_cast<std::uint8_t>(1u << w);
     monitor();
 }
+
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 void Simulation::set_kernel(KernelChoice choice) {
     kernel_choice_ = choice;
@@ -63,10 +72,12 @@ void Simulation::step_n(std::uint64_t n) {
     const std::uint64_t period = monitor_period();
     while (n > 0) {
         const std::uint64_t to_sample = period - steps_ % period;
-        const std::uint64_t k = std::min({n, to_sample, steps_per_kernel_call});
+        // With collisions, the pass follows every step: one step per kernel call.
+        const std::uint64_t k = collisions_ ? 1 : std::min({n, to_sample, steps_per_kernel_call});
         const std::size_t first = events_.size();
         const std::uint64_t dropped = dropped_events_;
-        kernel_(context(), static_cast<std::uint32_t>(k));
+        if (collisions_) collide_step();
+        else kernel_(context(), static_cast<std::uint32_t>(k));
         // Events the cap dropped during the call were the oldest: the new ones start that much earlier.
         if (no_rest_floors_) watch_rest(first - std::min<std::uint64_t>(first, dropped_events_ - dropped));
         monitor();
@@ -98,8 +109,20 @@ void Simulation::run_until(double t) {
     if (static_cast<double>(steps_) < target) step_n(static_cast<std::uint64_t>(target) - steps_);
 }
 
+void Simulation::collide_step() {
+    collisions_->begin_step(state_);
+    kernel_(context(), 1);
+    collisions_last_step_ = collisions_->end_step(state_, model_, dt());
+    collisions_total_ += collisions_last_step_;
+    for (const std::uint32_t i : collisions_->moved()) release_from_walls(i, state_.velocity(i));
+}
+
 void Simulation::set_velocity(std::size_t i, const Vec3& v) {
     state_.set_velocity(i, v);
+    release_from_walls(i, v);
+}
+
+void Simulation::release_from_walls(std::size_t i, const Vec3& v) {
     // Walls the new velocity points away from no longer hold the particle; walls it points
     // into keep it resting with the normal component removed on the next step.
     for (int w = 0; w < wall_count; ++w) {

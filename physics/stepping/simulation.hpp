@@ -13,10 +13,15 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace pl {
+
+namespace collide {
+class CollisionPass;
+}
 
 // What the monitor's scan found in a range of particles: the largest drag stiffness and, in
 // particle order, the particles that crossed a limit they have not been warned about yet.
@@ -29,6 +34,11 @@ struct MonitorScan {
 class Simulation {
 public:
     Simulation(Model model, const std::vector<ParticleSpec>& particles);
+    // Out of line: the collision pass is an incomplete type here (its headers stay out of the
+    // many files that include this one).
+    ~Simulation();
+    Simulation(Simulation&&) noexcept;
+    Simulation& operator=(Simulation&&) noexcept;
 
     void step();  // exactly one fixed step of model().integrator.dt
     // n steps; the same result as n calls of step(). Large scenes advance each block of
@@ -78,6 +88,10 @@ public:
     const ForceCounters& counters() const { return counters_; }
     // Adaptive Dormand-Prince: the internal step particle i's next step starts with (0: none yet).
     double adaptive_step_hint(std::size_t i) const { return i < adaptive_step_hint_.size() ? adaptive_step_hint_[i] : 0.0; }
+    // Particle-particle collisions (model().collisions.enabled): impulses applied in the last step
+    // and since the start. Both stay 0 without collisions.
+    std::uint64_t collisions_last_step() const { return collisions_last_step_; }
+    std::uint64_t collisions_total() const { return collisions_total_; }
 
     // Reynolds numbers the monitor has seen (at its samples, over the moving particles that are
     // neither on a wall nor frozen); lo > hi while none has flown, and without drag.
@@ -97,6 +111,9 @@ private:
     // (a wall gravity presses on) in the events from `first` on, when the model's dt is in it.
     void watch_rest(std::size_t first);
     std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
+    // Walls that velocity v points away from stop holding particle i (a kick or a collision).
+    void release_from_walls(std::size_t i, const Vec3& v);
+    void collide_step();  // one kernel step followed by the collision pass
 
     Model model_;
     WindField wind_;
@@ -116,6 +133,8 @@ private:
     double max_stiffness_ = 0.0;
     std::vector<MonitorScan> scans_;  // one per particle range, kept from sample to sample
     std::vector<double> adaptive_step_hint_;  // dopri5: last accepted internal step per particle
+    std::unique_ptr<collide::CollisionPass> collisions_;  // only where model().collisions.enabled
+    std::uint64_t collisions_last_step_ = 0, collisions_total_ = 0;
 };
 
 }  // namespace pl

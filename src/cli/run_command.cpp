@@ -89,6 +89,9 @@ void print_summary(const Scene& scene, const std::vector<Simulation>& sims, cons
         if (spin_matters(m))
             std::printf("    + spin kinetic %s + dissipated by rolling resistance %s\n",
                         sig(e.spin, 8).c_str(), sig(e.dissipated_rolling, 8).c_str());
+        if (m.collisions.enabled)
+            std::printf("  collisions: %llu impulses; collision work %s J (minus what they dissipated)\n",
+                        static_cast<unsigned long long>(sim.collisions_total()), sig(e.collision_work, 8).c_str());
         const ForceCounters& c = sim.counters();
         std::printf("  force evaluations: gravity %llu, drag %llu, wind %llu; time-of-impact solves %llu",
                     static_cast<unsigned long long>(c.gravity), static_cast<unsigned long long>(c.drag),

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "physics/model/field_schema.hpp"
+#include "physics/model/schema/collision_fields.hpp"
 #include "physics/model/schema/contact_fields.hpp"
 #include "physics/model/schema/drag_fields.hpp"
 #include "physics/model/schema/emitter_fields.hpp"
@@ -35,6 +36,7 @@ struct SectionSchema<Scene> {
         visit(ChildInfo{"world", "Gravity, air and wind."}, &Scene::world);
         visit(ChildInfo{"drag", "Air resistance."}, &Scene::drag);
         visit(ChildInfo{"contact", "How particles bounce on and slide along the walls."}, &Scene::contact);
+        visit(ChildInfo{"collisions", "Whether and how particles bounce off each other."}, &Scene::collisions);
         visit(ChildInfo{"integrator", "The numerical method and its fixed step."}, &Scene::integrator);
         visit(ChildInfo{"particles", "Particles listed one by one.", false, "particle"}, &Scene::particles);
         visit(ChildInfo{"emitter", "Many seeded particles (in addition to the list)."}, &Scene::emitter);

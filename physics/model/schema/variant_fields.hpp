@@ -3,6 +3,7 @@
 #pragma once
 
 #include "physics/model/field_schema.hpp"
+#include "physics/model/schema/collision_fields.hpp"
 #include "physics/model/schema/contact_fields.hpp"
 #include "physics/model/schema/drag_fields.hpp"
 #include "physics/model/schema/integrator_fields.hpp"
@@ -30,6 +31,8 @@ struct SectionSchema<Variant> {
               [](const Scene& s) -> const Air& { return s.world.air; });
         visit(ChildInfo{"contact", "Overrides the scene's contact section."}, &Variant::contact,
               [](const Scene& s) -> const ContactSettings& { return s.contact; });
+        visit(ChildInfo{"collisions", "Overrides the scene's collisions section."}, &Variant::collisions,
+              [](const Scene& s) -> const CollisionSettings& { return s.collisions; });
         visit(ChildInfo{"integrator", "Overrides the scene's integrator section."}, &Variant::integrator,
               [](const Scene& s) -> const IntegratorSettings& { return s.integrator; });
     }

@@ -1,0 +1,95 @@
+// What particle-particle collisions cost: a dilute gas (radius 5 mm, 1e3 to 1e5 particles in a
+// 2 m box, no gravity or drag, frictionless elastic walls) stepped with collisions on and off,
+// and the naive all-pairs test of the same swept boxes (O(n^2), up to where it is bearable).
+#include "physics/collide/broad_phase.hpp"
+#include "physics/model/emitter.hpp"
+#include "physics/stepping/simulation.hpp"
+#include "registry.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+namespace pl::bench {
+
+namespace {
+
+struct Gas {
+    Model model;
+    std::vector<ParticleSpec> particles;
+};
+
+Gas dilute_gas(std::size_t n, bool collisions) {
+    Gas g;
+    g.model.room.size = {2.0, 2.0, 2.0};
+    g.model.world.gravity = {0.0, 0.0, 0.0};
+    g.model.contact = {1.0, 0.0, 0.0};
+    g.model.integrator.dt = 1e-3;
+    g.model.collisions = {collisions, 1.0, 0.0};
+    Emitter e;
+    e.count = n;
+    e.seed = 5;
+    e.region_min = {-0.95, -0.95, -0.95};
+    e.region_max = {0.95, 0.95, 0.95};
+    e.speed_min = 0.5;
+    e.speed_max = 2.0;
+    e.radius_min = e.radius_max = 0.005;
+    g.particles = emit_particles(e, g.model.room);
+    return g;
+}
+
+void run_gas(benchmark::State& state, std::size_t n, bool collisions) {
+    const Gas g = dilute_gas(n, collisions);
+    Simulation sim(g.model, g.particles);
+    sim.set_threads(1);
+    sim.step_n(10);  // the collision pass's buffers reach their size
+    for (auto _ : state) sim.step();
+    state.counters[rate_counter] =
+        benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["collisions/step"] = static_cast<double>(sim.collisions_total()) / static_cast<double>(sim.step_count());
+}
+
+// The broad phase against the all-pairs loop on the gas's boxes (one step's motion).
+void run_pairs(benchmark::State& state, std::size_t n, bool grid) {
+    const Gas g = dilute_gas(n, true);
+    collide::SweptBoxes boxes;
+    boxes.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const ParticleSpec& p = g.particles[i];
+        for (int k = 0; k < 3; ++k) {
+            const double end = p.position[k] + g.model.integrator.dt * p.velocity[k];
+            boxes.lo[k][i] = std::min(p.position[k], end) - p.radius;
+            boxes.hi[k][i] = std::max(p.position[k], end) + p.radius;
+        }
+        boxes.ids.push_back(i);
+    }
+    collide::BroadPhase broad;
+    std::vector<collide::Pair> pairs;
+    for (auto _ : state) {
+        if (grid) broad.find_pairs(boxes, pairs);
+        else collide::all_pairs(boxes, pairs);
+        benchmark::DoNotOptimize(pairs.data());
+    }
+    state.counters[rate_counter] =
+        benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+}  // namespace
+
+void register_collision_benchmarks() {
+    for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000}}) {
+        for (const bool on : {false, true})
+            benchmark::RegisterBenchmark(("collisions/gas/" + std::string(on ? "on" : "off") + "/n:" + std::to_string(n)).c_str(),
+                                         [n, on](benchmark::State& s) { run_gas(s, n, on); })
+                ->UseRealTime();
+        benchmark::RegisterBenchmark(("collisions/pairs/grid/n:" + std::to_string(n)).c_str(),
+                                     [n](benchmark::State& s) { run_pairs(s, n, true); })
+            ->UseRealTime();
+        if (n <= 10000)  // 1e5 all-pairs: 5e9 box tests a call
+            benchmark::RegisterBenchmark(("collisions/pairs/all_pairs/n:" + std::to_string(n)).c_str(),
+                                         [n](benchmark::State& s) { run_pairs(s, n, false); })
+                ->UseRealTime();
+    }
+}
+
+}  // namespace pl::bench

@@ -1,0 +1,77 @@
+// The collision pass a Simulation with collisions enabled runs after each step of its particles
+// (walls already handled): it finds the pairs that met during the step, resolves each at its time
+// of impact, and pushes apart pairs left overlapping.
+//
+// Each particle's path over the step is taken as linear from where it started to where the step
+// put it. Passes repeat until no pair closes (Guendelman, Bridson & Fedkiw, "Nonconvex rigid
+// bodies with stacking", SIGGRAPH 2003: sequential impulses, pass after pass): a pass gathers the
+// first contact of every candidate pair, sorts them by (time, a, b) and resolves them in that
+// order, each particle at most once per pass (its path changed, so its later contacts are found
+// again by the next pass). A resolved pair meets at its time of impact, takes its impulse there and
+// moves on with its new velocity for the rest of the step, so a fast pair cannot pass through each
+// other whatever the step. The order is fixed and the pass runs on one thread: the result is the
+// same bits on any number of threads.
+#pragma once
+
+#include "physics/collide/broad_phase.hpp"
+#include "physics/model/scene.hpp"
+#include "physics/stepping/particle_state.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace pl::collide {
+
+class CollisionPass {
+public:
+    // At most this many passes per step; contacts still closing after them are found again at the
+    // start of the next step (as touching pairs, time of impact 0).
+    static constexpr int max_passes = 64;
+    // Overlap removal: the share of an overlap corrected per step, at most max_correction of the
+    // pair's contact distance per step (deep overlaps, e.g. from an emitter, open over several
+    // steps instead of throwing particles), and the overlap left alone (as a fraction of the
+    // contact distance), so that resting contacts do not jitter.
+    static constexpr double correction_share = 0.8;
+    static constexpr double max_correction = 0.2;
+    static constexpr double allowed_overlap = 1e-4;
+
+    explicit CollisionPass(std::size_t particles);
+
+    // Remembers where each particle starts the step.
+    void begin_step(const ParticleState& s);
+    // Resolves the collisions of the step of length h just taken (s holds its end state). Returns
+    // the number of impulses applied; `moved()` lists the particles whose velocity changed.
+    std::uint64_t end_step(ParticleState& s, const Model& m, double h);
+
+    const std::vector<std::uint32_t>& moved() const { return moved_; }
+    const std::vector<Pair>& candidates() const { return pairs_; }
+    const BroadPhase& broad_phase() const { return broad_; }
+
+private:
+    struct Hit {
+        double t;
+        std::uint32_t a, b;
+        Vec3 n;
+    };
+    void build_boxes(const ParticleState& s);
+    Vec3 at(std::uint32_t i, double t) const { return path_start_[i] + (t - path_time_[i]) * path_rate_[i]; }
+    bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, Hit& hit) const;
+    void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
+    void remove_overlaps(ParticleState& s);
+    void touch(std::uint32_t i);
+
+    std::vector<Vec3> start_;  // position at the start of the step, per particle
+    // The current path of each particle touched this step: at path_time_ it is at path_start_ and
+    // moves at path_rate_ (m/s) until the step's end.
+    std::vector<Vec3> path_start_, path_rate_;
+    std::vector<double> path_time_;
+    std::vector<std::uint32_t> stamp_;  // pass number that last resolved the particle
+    std::vector<std::uint8_t> touched_;
+    std::vector<std::uint32_t> moved_;
+    SweptBoxes boxes_;
+    BroadPhase broad_;
+    std::vector<Pair> pairs_;
+    std::vector<Hit> hits_;
+};
+
+}  // namespace pl::collide

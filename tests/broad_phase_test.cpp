@@ -1,0 +1,80 @@
+// The collision broad phase (physics/collide/broad_phase.hpp) finds exactly the pairs that the
+// all-pairs loop finds, with equal radii, mixed radii and a few big balls among small ones.
+#include "physics/collide/broad_phase.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace pl::collide {
+namespace {
+
+// n spheres in a cube of side `side`, each moved by up to `motion` over the step.
+SweptBoxes random_boxes(std::size_t n, double side, double r_min, double r_max, double motion, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> pos(0.0, side), rad(r_min, r_max), step(-motion, motion);
+    SweptBoxes b;
+    b.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const double r = rad(rng);
+        for (int k = 0; k < 3; ++k) {
+            const double x0 = pos(rng) - 0.5 * side, x1 = x0 + step(rng);
+            b.lo[k][i] = std::min(x0, x1) - r;
+            b.hi[k][i] = std::max(x0, x1) + r;
+        }
+        b.ids.push_back(i);
+    }
+    return b;
+}
+
+void expect_same_pairs(const SweptBoxes& boxes, std::size_t at_least) {
+    BroadPhase grid;
+    std::vector<Pair> fast, slow;
+    grid.find_pairs(boxes, fast);
+    all_pairs(boxes, slow);
+    EXPECT_EQ(fast, slow);
+    EXPECT_GE(slow.size(), at_least) << "too few pairs for the comparison to mean much";
+}
+
+TEST(BroadPhase, EqualRadiiSameAsAllPairs) {
+    const SweptBoxes boxes = random_boxes(3000, 1.0, 0.01, 0.01, 0.005, 1);
+    expect_same_pairs(boxes, 200);
+    BroadPhase grid;
+    std::vector<Pair> pairs;
+    grid.find_pairs(boxes, pairs);
+    EXPECT_EQ(grid.big_count(), 0u);
+}
+
+TEST(BroadPhase, MixedRadiiSameAsAllPairs) { expect_same_pairs(random_boxes(3000, 1.0, 0.003, 0.02, 0.01, 2), 200); }
+
+TEST(BroadPhase, FewBigBallsGoToTheirOwnList) {
+    SweptBoxes boxes = random_boxes(3000, 1.0, 0.005, 0.005, 0.0, 3);
+    for (std::uint32_t i : {7u, 1500u, 2999u})
+        for (int k = 0; k < 3; ++k) {
+            const double c = 0.5 * (boxes.lo[k][i] + boxes.hi[k][i]);
+            boxes.lo[k][i] = c - 0.2;
+            boxes.hi[k][i] = c + 0.2;
+        }
+    expect_same_pairs(boxes, 100);
+    BroadPhase grid;
+    std::vector<Pair> pairs;
+    grid.find_pairs(boxes, pairs);
+    EXPECT_EQ(grid.big_count(), 3u);
+    EXPECT_LT(grid.cell_size(), 0.05);  // the grid stays fine for the small ones
+}
+
+TEST(BroadPhase, LeftOutParticlesHaveNoPairs) {
+    SweptBoxes boxes = random_boxes(500, 0.3, 0.01, 0.01, 0.0, 4);
+    boxes.ids.erase(boxes.ids.begin() + 100, boxes.ids.begin() + 200);  // as frozen particles are
+    expect_same_pairs(boxes, 50);
+    BroadPhase grid;
+    std::vector<Pair> pairs;
+    grid.find_pairs(boxes, pairs);
+    for (const Pair& p : pairs) {
+        EXPECT_FALSE(p.a >= 100 && p.a < 200);
+        EXPECT_FALSE(p.b >= 100 && p.b < 200);
+    }
+}
+
+}  // namespace
+}  // namespace pl::collide
