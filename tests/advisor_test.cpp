@@ -318,7 +318,7 @@ TEST(Advisor, EachMetricHasItsOwnTolerance) {
 
 TEST(Advisor, CancelStopsTheVariantUnderWay) {
     Scene scene = scene_with(foam_ball, DragModel::quadratic);
-    scene.variants = {{"quadratic", quadratic_drag(), {}, {}, {}, {}}, {"again", quadratic_drag(), {}, {}, {}, {}}};
+    scene.variants = {{"quadratic", quadratic_drag(), {}, {}, {}, {}, {}}, {"again", quadratic_drag(), {}, {}, {}, {}, {}}};
     std::atomic<bool> cancel{false};
     AdviceOptions o;
     o.cancel = &cancel;

@@ -32,38 +32,36 @@ std::string quantity(double v, const char* unit, bool sign) {
 
 }  // namespace
 
-const char* to_string(AdviceMetric m) {
-    switch (m) {
-        case AdviceMetric::landing_time: return "landing time";
-        case AdviceMetric::impact_speed: return "impact speed";
-        case AdviceMetric::time_to_rest: return "time to rest";
-        case AdviceMetric::range: return "range";
-        case AdviceMetric::apex_height: return "apex height";
-        case AdviceMetric::landing_point: return "landing point";
-    }
-    return "?";
-}
+namespace {
 
-const char* json_key(AdviceMetric m) {
-    switch (m) {
-        case AdviceMetric::landing_time: return "landing_time_s";
-        case AdviceMetric::impact_speed: return "impact_speed_m_s";
-        case AdviceMetric::time_to_rest: return "time_to_rest_s";
-        case AdviceMetric::range: return "range_m";
-        case AdviceMetric::apex_height: return "apex_height_m";
-        case AdviceMetric::landing_point: return "landing_point_m";
-    }
-    return "?";
-}
+// Each metric's words, JSON key and unit: one row per AdviceMetric, in its order.
+struct MetricNames {
+    AdviceMetric metric;
+    const char* words;
+    const char* json_key;
+    const char* unit;
+};
+constexpr std::array<MetricNames, advice_metric_count> metric_names = {{
+    {AdviceMetric::landing_time, "landing time", "landing_time_s", "s"},
+    {AdviceMetric::impact_speed, "impact speed", "impact_speed_m_s", "m/s"},
+    {AdviceMetric::time_to_rest, "time to rest", "time_to_rest_s", "s"},
+    {AdviceMetric::range, "range", "range_m", "m"},
+    {AdviceMetric::apex_height, "apex height", "apex_height_m", "m"},
+    {AdviceMetric::landing_point, "landing point", "landing_point_m", "m"},
+}};
+static_assert([] {
+    for (std::size_t i = 0; i < advice_metric_count; ++i)
+        if (metric_names[i].metric != advice_metrics[i]) return false;
+    return true;
+}());
 
-const char* unit_of(AdviceMetric m) {
-    switch (m) {
-        case AdviceMetric::landing_time:
-        case AdviceMetric::time_to_rest: return "s";
-        case AdviceMetric::impact_speed: return "m/s";
-        default: return "m";
-    }
-}
+const MetricNames& names_of(AdviceMetric m) { return metric_names[static_cast<std::size_t>(m)]; }
+
+}  // namespace
+
+const char* to_string(AdviceMetric m) { return names_of(m).words; }
+const char* json_key(AdviceMetric m) { return names_of(m).json_key; }
+const char* unit_of(AdviceMetric m) { return names_of(m).unit; }
 
 double AdviceTolerances::absolute(AdviceMetric m) const {
     const std::string_view unit = unit_of(m);
