@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The Advise tab runs `particle-lab advise`'s code on the open scene in the background and shows
 # its verdicts: on feather_vs_ball, a vertical drop, drag matters in the air variant by landing
-# time (not by landing point or apex, which do not move), and the vacuum variant is told what
-# turning drag on would change; buoyancy (the foam ball is 0.64 of the air's density) matters too.
+# time (not by landing point or apex, which do not move), and so do buoyancy (the foam ball is 0.64
+# of the air's density) and added mass; in the vacuum variant drag would change nothing.
 # Usage: advise_tab.sh <particle-lab binary> <source dir>
 APP=$1
 SRC=$2
@@ -18,8 +18,9 @@ click_widget "$STATE" advise.run
 wait_for_state "$STATE" 'len(d["advice"]["variants"]) == 2 and not d["advice"]["running"]' "the advice did not run to its end"
 json_check "$STATE" 'any(v.startswith("drag matters: landing time +") for v in d["advice"]["variants"][0]["verdicts"])' \
     "the air variant's verdicts do not say drag matters by landing time"
-json_check "$STATE" 'any(v.startswith("drag is off but would change landing time +") for v in d["advice"]["variants"][1]["verdicts"])' \
-    "the vacuum variant's verdicts do not say what drag would change"
-json_check "$STATE" '"buoyancy" in d["advice"]["variants"][0]["matters"]' "buoyancy is not among the terms that matter"
+json_check "$STATE" 'any(v.startswith("drag is off and would change nothing beyond tolerance") for v in d["advice"]["variants"][1]["verdicts"])' \
+    "the vacuum variant's verdicts do not say that drag would change nothing"
+json_check "$STATE" '"buoyancy" in d["advice"]["variants"][0]["matters"] and "added mass" in d["advice"]["variants"][0]["matters"]' \
+    "buoyancy and added mass are not among the terms that matter"
 quit_app
 echo "OK"
