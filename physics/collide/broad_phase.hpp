@@ -1,9 +1,10 @@
 // Broad phase of particle-particle collisions: every pair of particles whose swept boxes (the
 // axis-aligned box around the sphere over one step, from its start to its end position) overlap.
 // A hashed uniform grid in structure-of-arrays form, rebuilt each step by a counting sort of the
-// particles by cell, finds them in linear time; the cell is twice the median box size. Particles
-// whose box is larger than a cell (a few big or fast balls among many small ones) stay out of the
-// grid and are tested against every other particle, so they do not make the cells coarse.
+// particles by cell, finds them in linear time; the cell is the largest box, at most twice the
+// median box. Particles whose box is larger than a cell (a few big or fast balls among many small
+// ones) stay out of the grid and are tested against every other particle, so they do not make
+// the cells coarse.
 // The same design as the uniform grids of Box2D v3's broad phase predecessors and of GPU particle
 // codes (Green, "Particle Simulation using CUDA", 2010: hash, sort by cell, scan neighbours).
 #pragma once

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <tuple>
 
+
 namespace pl::collide {
 namespace {
 
@@ -18,16 +19,27 @@ double motion_energy(const ParticleState& s, std::uint32_t i) {
     return kinetic_energy(s.mass[i], s.velocity(i)) + spin_energy(s.mass[i], s.radius[i], s.inertia[i], s.spin(i));
 }
 
+// Moves particle i to x; the potential energy that gives it is the contacts' work.
+void move_to(ParticleState& s, const Model& m, std::uint32_t i, const Vec3& x) {
+    if (!s.collision_work.empty())
+        s.collision_work[i] += s.mass[i] * glm::dot(m.world.gravity, s.position(i) - x);
+    s.set_position(i, x);
+}
+
 }  // namespace
 
 CollisionPass::CollisionPass(std::size_t particles)
-    : start_(particles), path_start_(particles), path_rate_(particles), path_time_(particles),
-      stamp_(particles, 0), touched_(particles, 0) {
+    : start_(particles), start_velocity_(particles), start_spin_(particles), path_start_(particles), path_rate_(particles), path_time_(particles),
+      stamp_(particles, 0), touched_(particles, 0), islands_(particles) {
     boxes_.resize(particles);
 }
 
 void CollisionPass::begin_step(const ParticleState& s) {
-    for (std::size_t i = 0; i < s.size(); ++i) start_[i] = s.position(i);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        start_[i] = s.position(i);
+        start_velocity_[i] = s.velocity(i);
+        start_spin_[i] = s.spin(i);
+    }
 }
 
 void CollisionPass::build_boxes(const ParticleState& s) {
@@ -44,7 +56,11 @@ void CollisionPass::build_boxes(const ParticleState& s) {
     }
 }
 
-bool CollisionPass::find_hit(const ParticleState& s, const Pair& p, double h, bool spin, Hit& hit) const {
+double CollisionPass::impact_speed(const Model& m, double h) {
+    return 2.0 * glm::length(m.world.gravity) * h;
+}
+
+bool CollisionPass::find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const {
     const double t0 = std::max(path_time_[p.a], path_time_[p.b]);
     const Vec3 d = at(p.b, t0) - at(p.a, t0);
     const Vec3 w = path_rate_[p.b] - path_rate_[p.a];
@@ -54,8 +70,9 @@ bool CollisionPass::find_hit(const ParticleState& s, const Pair& p, double h, bo
     const double len = glm::length(gap);
     if (!(len > 0.0)) return false;  // concentric: no normal to push along
     hit = {t0 + s_hit, p.a, p.b, gap / len};
-    // The impulse acts only on a contact point that closes (its velocity, not the path's rate).
-    return glm::dot(contact_velocity(body_of(s, p.a), body_of(s, p.b), hit.n, spin), hit.n) < 0.0;
+    // An impact needs a contact point that closes (its velocity, not the path's rate) faster than
+    // `impact`; slower ones are the contact solver's.
+    return glm::dot(contact_velocity(body_of(s, p.a), body_of(s, p.b), hit.n, spin), hit.n) < -impact;
 }
 
 void CollisionPass::touch(std::uint32_t i) {
@@ -79,10 +96,13 @@ void CollisionPass::resolve(ParticleState& s, const Model& m, const Hit& hit, bo
     }
 }
 
-void CollisionPass::remove_overlaps(ParticleState& s) {
+void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
     // Inverse-mass weighted positional correction (Catto's "split impulse" idea without the
     // velocity: only positions move), a bounded share of each overlap per step, in pair order.
+    // Sleeping pairs stay where they are. The potential energy a move gives is contact work.
+    const std::vector<std::uint8_t>& asleep = islands_.asleep();
     for (const Pair& p : pairs_) {
+        if (asleep[p.a] && asleep[p.b]) continue;
         const Vec3 d = s.position(p.b) - s.position(p.a);
         const double contact = s.radius[p.a] + s.radius[p.b];
         const double len = glm::length(d);
@@ -91,17 +111,48 @@ void CollisionPass::remove_overlaps(ParticleState& s) {
         const double inv_a = 1.0 / s.mass[p.a], inv_b = 1.0 / s.mass[p.b];
         const double correction = std::min(correction_share * overlap, max_correction * contact);
         const Vec3 push = (correction / (len * (inv_a + inv_b))) * d;
-        s.set_position(p.a, s.position(p.a) - inv_a * push);
-        s.set_position(p.b, s.position(p.b) + inv_b * push);
+        move_to(s, m, p.a, s.position(p.a) - inv_a * push);
+        move_to(s, m, p.b, s.position(p.b) + inv_b * push);
     }
 }
 
-std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h) {
-    for (const std::uint32_t i : moved_) touched_[i] = 0;
-    moved_.clear();
-    build_boxes(s);
-    broad_.find_pairs(boxes_, pairs_);
-    if (pairs_.empty()) return 0;
+void CollisionPass::hold_sleepers(ParticleState& s) {
+    // The kernel stepped every particle; a sleeping one goes back to where it slept, at rest, as
+    // if the step had not been taken (so nothing is booked: no energy changed).
+    if (islands_.asleep_count() == 0) return;
+    const std::vector<std::uint8_t>& asleep = islands_.asleep();
+    for (std::uint32_t i = 0; i < s.size(); ++i) {
+        if (!asleep[i]) continue;
+        s.set_position(i, start_[i]);
+        s.set_velocity(i, Vec3(0.0));
+        s.set_spin(i, Vec3(0.0));
+    }
+}
+
+void CollisionPass::keep_rest_on_walls(ParticleState& s, double impact) {
+    // A particle resting on a wall that the contacts left moving into it as fast as an impact is
+    // struck: the wall holds it no longer, so that the kernel's next step bounces it (with the
+    // walls' restitution and its ledger) instead of taking the normal velocity away unrecorded.
+    // One left moving into it or away from it slower than an impact keeps resting (the solver's
+    // round-off, not a lift or a bounce): that normal velocity is taken away here, and its
+    // energy booked as the contacts' work.
+    for (const std::uint32_t i : moved_) {
+        if (!s.resting[i]) continue;
+        for (int w = 0; w < wall_count; ++w) {
+            if (!(s.resting[i] & (1u << w))) continue;
+            const Vec3 n = RoomBounds::inward_normal(w), v = s.velocity(i);
+            const double away = glm::dot(v, n);
+            if (away <= -impact) {
+                s.resting[i] &= static_cast<std::uint8_t>(~(1u << w));
+            } else if (away != 0.0) {
+                s.set_velocity(i, v - away * n);
+                if (!s.collision_work.empty()) s.collision_work[i] -= 0.5 * s.mass[i] * away * away;
+            }
+        }
+    }
+}
+
+std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, double h) {
     for (const Pair& p : pairs_)
         for (const std::uint32_t i : {p.a, p.b}) {
             path_start_[i] = start_[i];
@@ -109,12 +160,13 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
             path_rate_[i] = (s.position(i) - start_[i]) / h;
         }
     const bool spin = spin_matters(m);
+    const double impact = impact_speed(m, h);
     std::uint64_t impulses = 0;
     for (std::uint32_t pass = 1; pass <= static_cast<std::uint32_t>(max_passes); ++pass) {
         hits_.clear();
         Hit hit;
         for (const Pair& p : pairs_)
-            if (find_hit(s, p, h, spin, hit)) hits_.push_back(hit);
+            if (find_hit(s, p, h, spin, impact, hit)) hits_.push_back(hit);
         if (hits_.empty()) break;
         std::sort(hits_.begin(), hits_.end(), [](const Hit& x, const Hit& y) {
             return x.t != y.t ? x.t < y.t : (x.a != y.a ? x.a < y.a : x.b < y.b);
@@ -128,11 +180,33 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     }
     for (const std::uint32_t i : moved_) stamp_[i] = 0;  // only resolved particles carry a stamp
     const RoomBounds room(m.room);
-    for (const std::uint32_t i : moved_) s.set_position(i, room.clamp_inside(at(i, h), s.radius[i]));
-    remove_overlaps(s);
-    for (const Pair& p : pairs_)
-        for (const std::uint32_t i : {p.a, p.b}) s.set_position(i, room.clamp_inside(s.position(i), s.radius[i]));
+    for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(at(i, h), s.radius[i]));
     return impulses;
+}
+
+std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h) {
+    for (const std::uint32_t i : moved_) touched_[i] = 0;
+    moved_.clear();
+    hold_sleepers(s);
+    build_boxes(s);
+    broad_.find_pairs(boxes_, pairs_);
+    const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h);
+    // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
+    solver_.gather(s, m, pairs_, moved_, islands_.asleep(), h, impact_speed(m, h));
+    resting_ = solver_.solve(s, m, h, start_velocity_, start_spin_);
+    for (const SolverContact& c : solver_.contacts()) {
+        if (!c.active) continue;
+        touch(c.a);
+        if (!c.is_wall()) touch(c.b);
+    }
+    keep_rest_on_walls(s, impact_speed(m, h));
+    remove_overlaps(s, m);
+    const RoomBounds room(m.room);
+    for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+    for (const Pair& p : pairs_)
+        for (const std::uint32_t i : {p.a, p.b}) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+    islands_.update(s, solver_.contacts(), m.contact.rest_speed, h);
+    return impacts;
 }
 
 }  // namespace pl::collide

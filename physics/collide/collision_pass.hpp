@@ -14,6 +14,8 @@
 #pragma once
 
 #include "physics/collide/broad_phase.hpp"
+#include "physics/collide/contact_solver.hpp"
+#include "physics/collide/sleep_islands.hpp"
 #include "physics/model/scene.hpp"
 #include "physics/stepping/particle_state.hpp"
 
@@ -40,12 +42,24 @@ public:
     // Remembers where each particle starts the step.
     void begin_step(const ParticleState& s);
     // Resolves the collisions of the step of length h just taken (s holds its end state). Returns
-    // the number of impulses applied; `moved()` lists the particles whose velocity changed.
+    // the number of impacts resolved; `moved()` lists the particles whose velocity changed.
     std::uint64_t end_step(ParticleState& s, const Model& m, double h);
+    // Wakes the island of particle i (its velocity was set from outside).
+    void wake(std::uint32_t i) { islands_.wake(i); }
+
+    // Pairs closing slower than this at their contact point are resting contacts (the contact
+    // solver's, without restitution); faster ones are impacts. It is what gravity adds to a
+    // closing speed in two steps: a pile's weight is never bounced, and without gravity every
+    // closing pair is an impact (an elastic gas keeps its energy exactly).
+    static double impact_speed(const Model& m, double h);
 
     const std::vector<std::uint32_t>& moved() const { return moved_; }
     const std::vector<Pair>& candidates() const { return pairs_; }
     const BroadPhase& broad_phase() const { return broad_; }
+    const std::vector<SolverContact>& contacts() const { return solver_.contacts(); }
+    const std::vector<std::uint8_t>& asleep() const { return islands_.asleep(); }
+    std::size_t asleep_count() const { return islands_.asleep_count(); }
+    std::uint64_t resting_contacts() const { return resting_; }  // loaded contacts, last step
 
 private:
     struct Hit {
@@ -55,12 +69,15 @@ private:
     };
     void build_boxes(const ParticleState& s);
     Vec3 at(std::uint32_t i, double t) const { return path_start_[i] + (t - path_time_[i]) * path_rate_[i]; }
-    bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, Hit& hit) const;
+    bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const;
+    void hold_sleepers(ParticleState& s);
+    std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
-    void remove_overlaps(ParticleState& s);
+    void remove_overlaps(ParticleState& s, const Model& m);
+    void keep_rest_on_walls(ParticleState& s, double impact);
     void touch(std::uint32_t i);
 
-    std::vector<Vec3> start_;  // position at the start of the step, per particle
+    std::vector<Vec3> start_, start_velocity_, start_spin_;  // at the start of the step, per particle
     // The current path of each particle touched this step: at path_time_ it is at path_start_ and
     // moves at path_rate_ (m/s) until the step's end.
     std::vector<Vec3> path_start_, path_rate_;
@@ -72,6 +89,9 @@ private:
     BroadPhase broad_;
     std::vector<Pair> pairs_;
     std::vector<Hit> hits_;
+    ContactSolver solver_;
+    SleepIslands islands_;
+    std::uint64_t resting_ = 0;
 };
 
 }  // namespace pl::collide

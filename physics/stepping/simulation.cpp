@@ -117,8 +117,16 @@ void Simulation::collide_step() {
     for (const std::uint32_t i : collisions_->moved()) release_from_walls(i, state_.velocity(i));
 }
 
+std::uint64_t Simulation::resting_contacts() const { return collisions_ ? collisions_->resting_contacts() : 0; }
+std::size_t Simulation::asleep_count() const { return collisions_ ? collisions_->asleep_count() : 0; }
+const std::vector<std::uint8_t>& Simulation::asleep() const {
+    static const std::vector<std::uint8_t> none;
+    return collisions_ ? collisions_->asleep() : none;
+}
+
 void Simulation::set_velocity(std::size_t i, const Vec3& v) {
     state_.set_velocity(i, v);
+    if (collisions_) collisions_->wake(static_cast<std::uint32_t>(i));
     release_from_walls(i, v);
 }
 

@@ -92,6 +92,13 @@ public:
     // and since the start. Both stay 0 without collisions.
     std::uint64_t collisions_last_step() const { return collisions_last_step_; }
     std::uint64_t collisions_total() const { return collisions_total_; }
+    // The pile: resting contacts carrying a load in the last step, and sleeping particles (a
+    // sleeping particle has 1 in `asleep()`; empty without collisions). `collision_pass()` is
+    // null without collisions (its contacts, for drawing them).
+    std::uint64_t resting_contacts() const;
+    std::size_t asleep_count() const;
+    const std::vector<std::uint8_t>& asleep() const;
+    const collide::CollisionPass* collision_pass() const { return collisions_.get(); }
 
     // Reynolds numbers the monitor has seen (at its samples, over the moving particles that are
     // neither on a wall nor frozen); lo > hi while none has flown, and without drag.

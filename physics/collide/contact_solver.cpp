@@ -1,0 +1,188 @@
+#include "physics/collide/contact_solver.hpp"
+
+#include "physics/stepping/contact.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pl::collide {
+namespace {
+
+// The least normal relative velocity (<= 0, no push) a contact may end the step with. Position:
+// the end gap after the solver's move (dv h) stays >= 0, u_n' >= u_n - gap / h, where the pair
+// ends the step apart or overlapping; but never a push apart (at most 0: overlaps are opened on
+// positions). Velocity: a contact closing slower than an impact may not close more than its gap
+// over the next step, u_n' >= -max(gap, 0) / h (a faster one is an impact: the next step's).
+double least_normal_velocity(double gap, double closing, double h, double impact) {
+    double least = std::min(closing - gap / h, 0.0);
+    if (closing > -impact) least = std::max(least, -std::max(gap, 0.0) / h);
+    return std::min(least, 0.0);
+}
+
+bool before(const SolverContact& x, const SolverContact& y) {
+    if (x.a != y.a) return x.a < y.a;
+    if (x.b != y.b) return x.b < y.b;
+    return x.wall < y.wall;
+}
+
+double inverse_inertia(const ParticleState& s, std::uint32_t i) {
+    return 1.0 / (s.inertia[i] * s.mass[i] * s.radius[i] * s.radius[i]);
+}
+
+}  // namespace
+
+void ContactSolver::gather(const ParticleState& s, const Model& m, const std::vector<Pair>& pairs,
+                           const std::vector<std::uint32_t>& struck, const std::vector<std::uint8_t>& asleep, double h,
+                           double impact) {
+    previous_.swap(contacts_);
+    contacts_.clear();
+    bodies_.clear();
+    if (in_body_.size() < s.size()) in_body_.resize(s.size(), 0);
+    const bool spin = spin_matters(m);
+    auto add_body = [&](std::uint32_t i) {
+        if (in_body_[i]) return;
+        in_body_[i] = 1;
+        bodies_.push_back(i);
+    };
+    for (const Pair& p : pairs) {
+        if (s.frozen[p.a] || s.frozen[p.b]) continue;
+        const Vec3 d = s.position(p.b) - s.position(p.a);
+        const double len = glm::length(d);
+        if (!(len > 0.0)) continue;  // concentric: no normal (the overlap pass opens them)
+        const double reach = s.radius[p.a] + s.radius[p.b];
+        const Vec3 n = d / len;
+        const double closing = glm::dot(s.velocity(p.b) - s.velocity(p.a), n);
+        const double gap = len - reach;
+        if (gap > contact_margin * reach + std::max(-closing, 0.0) * h) continue;
+        SolverContact c;
+        c.a = p.a;
+        c.b = p.b;
+        c.n = n;
+        c.least_un = least_normal_velocity(gap, closing, h, impact);
+        const double inv_a = 1.0 / s.mass[p.a], inv_b = 1.0 / s.mass[p.b];
+        c.normal_mass = 1.0 / (inv_a + inv_b);
+        c.tangent_mass = 1.0 / (inv_a + inv_b + (spin ? inv_a / s.inertia[p.a] + inv_b / s.inertia[p.b] : 0.0));
+        c.friction = m.collisions.friction;
+        c.active = !(asleep[p.a] && asleep[p.b]);
+        contacts_.push_back(c);
+        add_body(p.a);
+        add_body(p.b);
+    }
+    // The walls under (and beside) the particles of the pair contacts and of this step's impacts:
+    // the pile's weight, or a blow from above, has to reach the floor inside the same solve. A
+    // particle touching no other is the kernel's alone.
+    for (const std::uint32_t i : struck) add_body(i);
+    const RoomBounds room(m.room);
+    const std::size_t pair_contacts = contacts_.size();
+    for (const std::uint32_t i : bodies_) {
+        const Vec3 v = s.velocity(i);
+        for (int w = 0; w < wall_count; ++w) {
+            const Vec3 inward = RoomBounds::inward_normal(w);
+            const double gap = room.distance(w, s.position(i), s.radius[i]);
+            const double closing = glm::dot(v, inward);  // the wall's velocity (0) minus the particle's, along n
+            if (gap > contact_margin * s.radius[i] + std::max(-closing, 0.0) * h) continue;
+            SolverContact c;
+            c.a = i;
+            c.b = SolverContact::wall_contact;
+            c.wall = static_cast<std::uint8_t>(w);
+            c.n = -inward;  // from the particle into the wall
+            c.least_un = least_normal_velocity(gap, closing, h, impact);
+            c.normal_mass = s.mass[i];
+            c.tangent_mass = 1.0 / (1.0 / s.mass[i] + (spin ? 1.0 / (s.inertia[i] * s.mass[i]) : 0.0));
+            c.friction = m.contact.friction;
+            c.active = !asleep[i];
+            contacts_.push_back(c);
+        }
+    }
+    if (contacts_.size() > pair_contacts) std::sort(contacts_.begin(), contacts_.end(), before);
+    std::sort(bodies_.begin(), bodies_.end());
+    for (const std::uint32_t i : bodies_) in_body_[i] = 0;
+}
+
+void ContactSolver::warm_start() {
+    // Both lists are in (a, b, wall) order: one merge walk finds the contacts that persist.
+    auto prev = previous_.begin();
+    for (SolverContact& c : contacts_) {
+        while (prev != previous_.end() && before(*prev, c)) ++prev;
+        if (prev == previous_.end()) break;
+        if (before(c, *prev)) continue;
+        c.lambda_n = prev->lambda_n;
+        c.lambda_t = prev->lambda_t - glm::dot(prev->lambda_t, c.n) * c.n;  // onto today's tangent plane
+    }
+}
+
+void ContactSolver::apply(ParticleState& s, const SolverContact& c, const Vec3& impulse, bool spin) const {
+    // `impulse` acts on b (along +n pushes b away from a); a takes its opposite, at the contact
+    // point r_a n from its centre (b's is at -r_b n).
+    s.set_velocity(c.a, s.velocity(c.a) - impulse / s.mass[c.a]);
+    if (spin) s.set_spin(c.a, s.spin(c.a) + glm::cross(s.radius[c.a] * c.n, -impulse) * inverse_inertia(s, c.a));
+    if (c.is_wall()) return;
+    s.set_velocity(c.b, s.velocity(c.b) + impulse / s.mass[c.b]);
+    if (spin) s.set_spin(c.b, s.spin(c.b) + glm::cross(-s.radius[c.b] * c.n, impulse) * inverse_inertia(s, c.b));
+}
+
+void ContactSolver::solve_contact(ParticleState& s, SolverContact& c, bool spin) const {
+    auto relative_velocity = [&] {
+        // Surface velocity of b minus a's at the contact point (a wall does not move).
+        Vec3 u = -s.velocity(c.a);
+        if (spin) u -= glm::cross(s.spin(c.a), s.radius[c.a] * c.n);
+        if (!c.is_wall()) {
+            u += s.velocity(c.b);
+            if (spin) u += glm::cross(s.spin(c.b), -s.radius[c.b] * c.n);
+        }
+        return u;
+    };
+    // Normal: u_n >= least_un, with lambda_n >= 0.
+    const double un = glm::dot(relative_velocity(), c.n);
+    const double lambda_n = std::max(c.lambda_n - c.normal_mass * (un - c.least_un), 0.0);
+    apply(s, c, (lambda_n - c.lambda_n) * c.n, spin);
+    c.lambda_n = lambda_n;
+    // Friction: stop the sliding, within the Coulomb cone of today's normal impulse.
+    if (!(c.friction > 0.0)) return;
+    const Vec3 u = relative_velocity();
+    const Vec3 ut = u - glm::dot(u, c.n) * c.n;
+    Vec3 lambda_t = c.lambda_t - c.tangent_mass * ut;
+    const double bound = c.friction * c.lambda_n, size = glm::length(lambda_t);
+    if (size > bound) lambda_t *= bound / size;
+    apply(s, c, lambda_t - c.lambda_t, spin);
+    c.lambda_t = lambda_t;
+}
+
+std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
+                                   const std::vector<Vec3>& start_spin) {
+    if (contacts_.empty()) return 0;
+    const bool spin = spin_matters(m);
+    v0_.resize(bodies_.size());
+    w0_.resize(bodies_.size());
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        v0_[k] = s.velocity(bodies_[k]);
+        w0_[k] = s.spin(bodies_[k]);
+    }
+    warm_start();
+    for (const SolverContact& c : contacts_)
+        if (c.active) apply(s, c, c.lambda_n * c.n + c.lambda_t, spin);
+    for (int it = 0; it < iterations; ++it)
+        for (SolverContact& c : contacts_)
+            if (c.active) solve_contact(s, c, spin);
+    std::uint64_t loaded = 0;
+    for (const SolverContact& c : contacts_) loaded += c.active && c.lambda_n > 0.0;
+    // The impulses acted over the whole step: the end positions move by dv h (semi-implicit Euler,
+    // x1 = x0 + v1 h). Their work is the impulse times the mean of the velocities at the start
+    // and at the end of the step (and likewise for the spin): with gravity's m g h (v0 + v1) / 2
+    // it makes up the step's change of kinetic energy exactly, and a contact at rest
+    // (v0 = v1 = 0) does no work, so that a still pile books nothing.
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const std::uint32_t i = bodies_[k];
+        const Vec3 dv = s.velocity(i) - v0_[k], dw = s.spin(i) - w0_[k];
+        s.set_position(i, s.position(i) + h * dv);
+        if (s.collision_work.empty()) continue;
+        const double mi = s.mass[i], moment = s.inertia[i] * mi * s.radius[i] * s.radius[i];
+        s.collision_work[i] += mi * glm::dot(dv, 0.5 * (start_velocity[i] + s.velocity(i))) +
+                               moment * glm::dot(dw, 0.5 * (start_spin[i] + s.spin(i)));
+    }
+    return loaded;
+}
+
+}  // namespace pl::collide

@@ -1,0 +1,85 @@
+// Resting contacts of particles among themselves and with the walls: the slow, lasting contacts
+// of a pile, which impacts (the time-of-impact passes of collision_pass.hpp) cannot hold still.
+//
+// Sequential impulses with accumulated, clamped impulses and warm starting (Catto, "Iterative
+// Dynamics with Temporal Coherence", GDC 2005; "Fast and Simple Physics using Sequential
+// Impulses", GDC 2006), the velocity solver of Box2D and Jolt, applied after the step: the
+// impulses act over the whole step in the semi-implicit Euler sense (x1 = x0 + v1 h), so each
+// particle's end position moves by its velocity change times h. A contact's normal impulse
+// lambda_n >= 0 keeps its normal relative velocity u_n at or above a least value: the end gap
+// after that move is not negative, and a contact closing slower than an impact (collision_pass.hpp)
+// does not close more than its gap over the next step. So a pile at rest stays touching, a pair
+// that ends the step apart is never held back, and the solver gives no energy: no restitution
+// (these contacts are slow) and no push apart in the velocities; overlaps left by round-off or
+// by an emitter are opened on positions only (collision_pass.cpp). Friction is Coulomb's,
+// |lambda_t| <= mu lambda_n, at the contact point (with spin where it matters).
+//
+// Warm starting applies last step's impulses of the contacts that persist (same pair or same
+// particle and wall) before iterating: a pile's weight then reaches the floor over steps, not
+// only over the iterations of one step. One thread, in a fixed contact order: the same bits on
+// any number of threads.
+#pragma once
+
+#include "physics/collide/broad_phase.hpp"
+#include "physics/model/scene.hpp"
+#include "physics/stepping/particle_state.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace pl::collide {
+
+// A contact the solver holds: particles a and b (b = wall_contact for a contact of a with
+// wall `wall`), the normal from a to b, its gap and its impulses.
+struct SolverContact {
+    static constexpr std::uint32_t wall_contact = 0xffffffffu;
+    std::uint32_t a = 0, b = 0;
+    std::uint8_t wall = 0;
+    Vec3 n{0.0};
+    double least_un = 0.0;   // m/s, the least normal relative velocity it may end with (<= 0)
+    double normal_mass = 0;  // 1 / (1/m_a + 1/m_b)
+    double tangent_mass = 0; // 1 / K_t (with the spin's share where it matters)
+    double friction = 0;
+    double lambda_n = 0;     // accumulated normal impulse, N s (>= 0)
+    Vec3 lambda_t{0.0};      // accumulated tangential impulse, N s
+    bool active = true;      // false: both ends asleep; kept (with its impulses) but not solved
+    bool is_wall() const { return b == wall_contact; }
+};
+
+class ContactSolver {
+public:
+    // Velocity iterations per step (Jolt's default is 10; Box2D v3 takes 4 substeps instead).
+    static constexpr int iterations = 10;
+    // Pairs whose surfaces are closer than this share of their contact distance at the end of
+    // the step, or could close within the next, are contacts; walls likewise within this share
+    // of the radius.
+    static constexpr double contact_margin = 0.05;
+
+    // Gathers the contacts among the candidate pairs (sorted) from the end state of the step in
+    // s, and the wall contacts of their particles and of the `struck` ones (this step's
+    // impacts); frozen particles take no part. A contact whose particles are all asleep is
+    // listed (islands are made of contacts) but not solved.
+    void gather(const ParticleState& s, const Model& m, const std::vector<Pair>& pairs,
+                const std::vector<std::uint32_t>& struck, const std::vector<std::uint8_t>& asleep, double h,
+                double impact);
+    // Solves them; changes the velocities (and spins) of s, and moves the end positions by the
+    // velocity changes times h. Adds the contacts' work on each particle to s.collision_work
+    // (from the velocities and spins at the start of the step). Returns the number of contacts
+    // that carry an impulse.
+    std::uint64_t solve(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
+                        const std::vector<Vec3>& start_spin);
+
+    const std::vector<SolverContact>& contacts() const { return contacts_; }
+
+private:
+    void warm_start();
+    void apply(ParticleState& s, const SolverContact& c, const Vec3& impulse, bool spin) const;
+    void solve_contact(ParticleState& s, SolverContact& c, bool spin) const;
+
+    std::vector<SolverContact> contacts_, previous_;
+    std::vector<std::uint32_t> bodies_;   // particles in some contact, increasing
+    std::vector<std::uint8_t> in_body_;   // per particle: 1 if listed in bodies_
+    std::vector<Vec3> v0_, w0_;           // velocity and spin of each body before the solve
+};
+
+}  // namespace pl::collide

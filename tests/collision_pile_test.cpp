@@ -1,0 +1,154 @@
+// Resting piles (physics/collide/contact_solver.hpp, sleep_islands.hpp): balls dropped into the
+// room settle into a pile that is still (no kinetic energy, no drift once asleep), overlaps
+// stay under 1% of the radius, the ledger holds and the contacts gain no energy; a stack stands
+// still; a sleeping pile wakes when something strikes it or a velocity is set by hand.
+#include "physics/collide/collision_pass.hpp"
+#include "physics/model/emitter.hpp"
+#include "physics/stepping/energy.hpp"
+#include "physics/stepping/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace pl {
+namespace {
+
+// Balls of 2 cm and 30 g, released at random (overlapping some) over a floor of `side` x
+// `side` m, falling from up to `height` m; walls and pairs with e = 0.5, mu = 0.5.
+struct Pile {
+    Model model;
+    std::vector<ParticleSpec> particles;
+};
+
+Pile pile(std::size_t n, double side, double height, std::uint64_t seed = 1) {
+    Pile p;
+    p.model.room.center = {0.0, height / 2, 0.0};
+    p.model.room.size = {side, height, side};
+    p.model.contact.restitution = 0.5;
+    p.model.contact.friction = 0.5;
+    p.model.contact.rest_speed = 0.05;
+    p.model.integrator.dt = 0.002;
+    p.model.collisions = {true, 0.5, 0.5};
+    Emitter e;
+    e.count = n;
+    e.seed = seed;
+    const double inner = side / 2 - 0.03;
+    e.region_min = {-inner, 0.1 * height, -inner};
+    e.region_max = {inner, 0.95 * height, inner};
+    e.speed_min = 0.0;
+    e.speed_max = 0.5;
+    e.radius_min = e.radius_max = 0.02;
+    e.mass_min = e.mass_max = 0.03;
+    p.particles = emit_particles(e, p.model.room);
+    return p;
+}
+
+double kinetic(const ParticleState& s) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i) e += kinetic_energy(s.mass[i], s.velocity(i));
+    return e;
+}
+
+// The deepest overlap of any pair, as a share of the smaller radius (all pairs: the reference).
+double deepest_overlap(const ParticleState& s) {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        for (std::size_t j = i + 1; j < s.size(); ++j) {
+            const double gap = glm::length(s.position(j) - s.position(i)) - s.radius[i] - s.radius[j];
+            worst = std::max(worst, -gap / std::min(s.radius[i], s.radius[j]));
+        }
+    return worst;
+}
+
+std::vector<Vec3> positions(const ParticleState& s) {
+    std::vector<Vec3> x(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) x[i] = s.position(i);
+    return x;
+}
+
+TEST(CollisionPile, BallsDroppedIntoTheRoomSettleStill) {
+    const Pile p = pile(1000, 0.5, 1.0);
+    Simulation sim(p.model, p.particles);
+    sim.run_until(3.0);
+    const ParticleState& s = sim.state();
+    EXPECT_EQ(sim.asleep_count(), s.size()) << "the whole pile sleeps";
+    EXPECT_EQ(kinetic(s), 0.0);
+    EXPECT_LT(deepest_overlap(s), 0.01);
+    // A pile, not a layer: 1000 balls of 2 cm over 0.25 m^2 stand in several layers.
+    double top = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i) top = std::max(top, s.y[i]);
+    EXPECT_GT(top, 0.1);
+    // No drift, no creep: the same bits 10 s later.
+    const std::vector<Vec3> settled = positions(s);
+    sim.run_until(13.0);
+    EXPECT_EQ(positions(sim.state()), settled);
+    // The ledger holds to the kernel's own error, and the contacts took energy, never gave it.
+    const EnergyBreakdown en = total_energy(sim.state(), sim.model().world.gravity, sim.model().room);
+    EXPECT_LT(std::abs(en.residual()) / en.initial, 0.01) << "residual " << en.residual() << " J";
+    EXPECT_LT(en.collision_work, 0.0);
+}
+
+TEST(CollisionPile, AStackOfFiveStandsStillOnTheFloor) {
+    Pile p = pile(0, 0.5, 1.0);
+    for (int k = 0; k < 5; ++k) p.particles.push_back({{0.0, 0.02 + 0.04 * k, 0.0}, {0.0, 0.0, 0.0}, 0.03, 0.02});
+    Simulation sim(p.model, p.particles);
+    sim.run_until(0.3);
+    EXPECT_EQ(sim.asleep_count(), 0u) << "asleep before time_to_sleep";
+    sim.run_until(1.0);
+    EXPECT_EQ(sim.asleep_count(), 5u);
+    for (int k = 0; k < 5; ++k) {
+        // Each ball where it was put, less the overlap the contacts leave alone (1e-4 of the
+        // contact distance) per contact below it: the stack neither sinks nor bounces (the weight
+        // reaches the floor through the solver, warm-started).
+        const double sunk = k * collide::CollisionPass::allowed_overlap * 0.04;
+        EXPECT_NEAR(sim.state().y[k], 0.02 + 0.04 * k - sunk, 1e-9) << "ball " << k;
+        EXPECT_EQ(sim.state().x[k], 0.0);
+    }
+    const EnergyBreakdown en = total_energy(sim.state(), sim.model().world.gravity, sim.model().room);
+    EXPECT_LT(std::abs(en.residual()), 1e-4 * en.initial);
+}
+
+std::size_t highest(const ParticleState& s) {
+    std::size_t top = 0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (s.y[i] > s.y[top]) top = i;
+    return top;
+}
+
+TEST(CollisionPile, ASleepingPileWakesWhenStruckAndSleepsAgain) {
+    const Pile p = pile(200, 0.3, 0.6, 5);
+    Simulation sim(p.model, p.particles);
+    sim.run_until(3.0);
+    // Every ball in the pile sleeps (a ball alone on the floor rests there without sleeping).
+    const std::size_t asleep = sim.asleep_count();
+    ASSERT_GT(asleep, sim.particle_count() * 95 / 100);
+    ASSERT_EQ(kinetic(sim.state()), 0.0);
+    // The top ball is thrown up at 3 m/s: setting its velocity wakes it (a kick is not undone
+    // by sleep), the rest of the pile sleeps on while it flies, and it strikes the pile on its
+    // way down, about 0.6 s later.
+    const std::size_t top = highest(sim.state());
+    sim.set_velocity(top, {0.0, 3.0, 0.0});
+    sim.step();
+    EXPECT_GT(sim.state().vy[top], 2.9);
+    sim.run_until(sim.time() + 0.2);
+    EXPECT_EQ(sim.asleep_count(), asleep - 1) << "asleep while the ball flies";
+    const std::vector<Vec3> before_strike = positions(sim.state());
+    std::size_t least_asleep = sim.particle_count();
+    for (int k = 0; k < 300; ++k) {
+        sim.step();
+        least_asleep = std::min(least_asleep, sim.asleep_count());
+    }
+    EXPECT_LT(least_asleep, asleep / 2) << "the struck island woke";
+    std::size_t moved = 0;
+    const std::vector<Vec3> after_strike = positions(sim.state());
+    for (std::size_t i = 0; i < after_strike.size(); ++i) moved += i != top && after_strike[i] != before_strike[i];
+    EXPECT_GT(moved, 10u);
+    sim.run_until(sim.time() + 4.0);
+    EXPECT_GT(sim.asleep_count(), sim.particle_count() * 95 / 100) << "and settled again";
+    EXPECT_EQ(kinetic(sim.state()), 0.0);
+    EXPECT_LT(deepest_overlap(sim.state()), 0.01);
+}
+
+}  // namespace
+}  // namespace pl
