@@ -1,6 +1,8 @@
 // What particle-particle collisions cost: a dilute gas (radius 5 mm, 1e3 to 1e5 particles in a
 // 2 m box, no gravity or drag, frictionless elastic walls) stepped with collisions on and off,
-// and the naive all-pairs test of the same swept boxes (O(n^2), up to where it is bearable).
+// the naive all-pairs test of the same swept boxes (O(n^2), up to where it is bearable), and a
+// pile (balls of 2 cm dropped on a floor sized for about ten layers) while it settles, awake,
+// and once it sleeps.
 #include "physics/collide/broad_phase.hpp"
 #include "physics/model/emitter.hpp"
 #include "physics/stepping/simulation.hpp"
@@ -8,7 +10,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <string>
+#include <utility>
 
 namespace pl::bench {
 
@@ -74,9 +78,51 @@ void run_pairs(benchmark::State& state, std::size_t n, bool grid) {
         benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+// n balls of 2 cm, 30 g dropped from up to 1.5 m onto a floor that holds about n / 10 of them
+// side by side; e = 0.5, mu = 0.5 for walls and pairs (the test pile of collision_pile_test).
+Gas pile(std::size_t n) {
+    Gas g;
+    const double side = 0.04 * std::sqrt(static_cast<double>(n) / 10.0);
+    g.model.room.center = {0.0, 1.0, 0.0};
+    g.model.room.size = {side, 2.0, side};
+    g.model.contact = {0.5, 0.5, 0.05};
+    g.model.integrator.dt = 0.002;
+    g.model.collisions = {true, 0.5, 0.5};
+    Emitter e;
+    e.count = n;
+    e.seed = 1;
+    e.region_min = {-side / 2 + 0.02, 0.1, -side / 2 + 0.02};
+    e.region_max = {side / 2 - 0.02, 1.5, side / 2 - 0.02};
+    e.speed_min = 0.0;
+    e.speed_max = 0.5;
+    e.radius_min = e.radius_max = 0.02;
+    e.mass_min = e.mass_max = 0.03;
+    g.particles = emit_particles(e, g.model.room);
+    return g;
+}
+
+// Steps of the pile from time `from` on (0.7 s: fallen and heaped, awake; 3 s: asleep).
+void run_pile(benchmark::State& state, std::size_t n, double from) {
+    const Gas g = pile(n);
+    Simulation sim(g.model, g.particles);
+    sim.set_threads(1);
+    sim.run_until(from);
+    for (auto _ : state) sim.step();
+    state.counters[rate_counter] =
+        benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["asleep"] = static_cast<double>(sim.asleep_count()) / static_cast<double>(n);
+    state.counters["contacts"] = static_cast<double>(sim.resting_contacts()) / static_cast<double>(n);
+}
+
 }  // namespace
 
 void register_collision_benchmarks() {
+    for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}})
+        for (const auto& [phase, from] : {std::pair{"settling", 0.7}, std::pair{"asleep", 3.0}})
+            benchmark::RegisterBenchmark(("collisions/pile/" + std::string(phase) + "/n:" + std::to_string(n)).c_str(),
+                                         [n, from](benchmark::State& s) { run_pile(s, n, from); })
+                ->UseRealTime()
+                ->Iterations(50);
     for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000}}) {
         for (const bool on : {false, true})
             benchmark::RegisterBenchmark(("collisions/gas/" + std::string(on ? "on" : "off") + "/n:" + std::to_string(n)).c_str(),
