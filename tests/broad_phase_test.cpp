@@ -76,5 +76,29 @@ TEST(BroadPhase, LeftOutParticlesHaveNoPairs) {
     }
 }
 
+TEST(BroadPhase, PairsOfTwoSleepingParticlesAreLeftOut) {
+    // Every third particle awake, the rest asleep, and three big balls (one asleep) among them:
+    // exactly the all-pairs loop's pairs that have an awake particle.
+    SweptBoxes boxes = random_boxes(3000, 0.6, 0.01, 0.01, 0.002, 5);
+    for (std::uint32_t i : {9u, 1500u, 2998u})
+        for (int k = 0; k < 3; ++k) {
+            const double c = 0.5 * (boxes.lo[k][i] + boxes.hi[k][i]);
+            boxes.lo[k][i] = c - 0.15;
+            boxes.hi[k][i] = c + 0.15;
+        }
+    std::vector<std::uint8_t> asleep(3000);
+    for (std::uint32_t i = 0; i < 3000; ++i) asleep[i] = i % 3 != 0;
+    BroadPhase grid;
+    std::vector<Pair> fast, slow, expected;
+    grid.find_pairs(boxes, fast, asleep.data());
+    all_pairs(boxes, slow);
+    for (const Pair& p : slow)
+        if (!(asleep[p.a] && asleep[p.b])) expected.push_back(p);
+    EXPECT_EQ(grid.big_count(), 3u);
+    EXPECT_EQ(fast, expected);
+    EXPECT_GT(expected.size(), 500u);
+    EXPECT_LT(expected.size(), slow.size());
+}
+
 }  // namespace
 }  // namespace pl::collide

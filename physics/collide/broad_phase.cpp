@@ -81,17 +81,21 @@ void BroadPhase::build_grid(const SweptBoxes& boxes) {
     }
 }
 
-void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {
+void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep) {
     pairs.clear();
     big_.clear();
     if (boxes.ids.size() < 2) return;
     build_grid(boxes);
-    // Slot by slot, so that consecutive particles share their neighbour buckets in cache.
+    auto sleeps = [asleep](std::uint32_t i) { return asleep && asleep[i]; };
+    // Slot by slot, so that consecutive particles share their neighbour buckets in cache. An awake
+    // particle takes the pairs with higher awake ids and with every sleeping one (which does not
+    // scan), so each pair is met once.
     for (std::size_t a = 0; a < sorted_.size(); ++a) {
         // A box no larger than a cell overlaps only boxes whose centres lie in the 27 cells around
         // its own centre's cell. Cells sharing a bucket are told apart by their coordinates, so
         // each neighbour is met once even when a bucket is scanned for two cells.
         const std::uint32_t i = sorted_[a];
+        if (sleeps(i)) continue;
         const Cell c = slot_cell_[a];
         for (std::int64_t dx = -1; dx <= 1; ++dx)
             for (std::int64_t dy = -1; dy <= 1; ++dy)
@@ -100,18 +104,22 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {
                     const std::size_t b = bucket_of(n[0], n[1], n[2]);
                     for (std::uint32_t k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k) {
                         const Cell& cj = slot_cell_[k];
-                        if (sorted_[k] > i && cj[0] == n[0] && cj[1] == n[1] && cj[2] == n[2] &&
+                        const std::uint32_t j = sorted_[k];
+                        if ((j > i || (j != i && sleeps(j))) && cj[0] == n[0] && cj[1] == n[1] && cj[2] == n[2] &&
                             slot_lo_[0][a] <= slot_hi_[0][k] && slot_lo_[0][k] <= slot_hi_[0][a] &&
                             slot_lo_[1][a] <= slot_hi_[1][k] && slot_lo_[1][k] <= slot_hi_[1][a] &&
                             slot_lo_[2][a] <= slot_hi_[2][k] && slot_lo_[2][k] <= slot_hi_[2][a])
-                            pairs.push_back({i, sorted_[k]});
+                            pairs.push_back({std::min(i, j), std::max(i, j)});
                     }
                 }
     }
+    // Big particles against all: a pair of two big ones is taken from the side that would take it
+    // in the grid (the lower awake id, or the awake one).
     for (const std::uint32_t big : big_)
         for (const std::uint32_t j : boxes.ids) {
+            if (j == big || (sleeps(big) && sleeps(j)) || !boxes.overlap(big, j)) continue;
             const bool other_big = boxes.extent(j) > cell_;
-            if (j == big || (other_big && j < big) || !boxes.overlap(big, j)) continue;
+            if (other_big && (sleeps(big) || (!sleeps(j) && j < big))) continue;
             pairs.push_back({std::min(big, j), std::max(big, j)});
         }
     std::sort(pairs.begin(), pairs.end());

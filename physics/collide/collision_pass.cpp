@@ -189,7 +189,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     moved_.clear();
     hold_sleepers(s);
     build_boxes(s);
-    broad_.find_pairs(boxes_, pairs_);
+    broad_.find_pairs(boxes_, pairs_, islands_.asleep().data());
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
     solver_.gather(s, m, pairs_, moved_, islands_.asleep(), h, impact_speed(m, h));
@@ -205,6 +205,8 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
     for (const Pair& p : pairs_)
         for (const std::uint32_t i : {p.a, p.b}) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+    for (const std::uint32_t i : moved_)
+        if (islands_.asleep()[i]) islands_.wake(i);  // struck by an impact or a contact
     islands_.update(s, solver_.contacts(), m.contact.rest_speed, h);
     return impacts;
 }

@@ -8,8 +8,8 @@ namespace pl::collide {
 
 SleepIslands::SleepIslands(std::size_t particles)
     : still_(particles, 0.0), parent_(particles), island_still_(particles, 0.0), in_contact_(particles, 0),
-      asleep_(particles, 0) {
-    for (std::uint32_t i = 0; i < particles; ++i) parent_[i] = i;
+      asleep_(particles, 0), ring_(particles), head_(particles, none), next_member_(particles, none) {
+    for (std::uint32_t i = 0; i < particles; ++i) parent_[i] = ring_[i] = i;
 }
 
 std::uint32_t SleepIslands::root(std::uint32_t i) {
@@ -22,14 +22,37 @@ std::uint32_t SleepIslands::root(std::uint32_t i) {
 
 void SleepIslands::wake(std::uint32_t i) {
     still_[i] = 0.0;
-    if (asleep_[i]) {
-        asleep_[i] = 0;
+    wake_island(i);
+}
+
+void SleepIslands::wake_island(std::uint32_t i) {
+    if (!asleep_[i]) return;
+    std::uint32_t k = i;
+    do {
+        const std::uint32_t next = ring_[k];
+        asleep_[k] = 0;
+        ring_[k] = k;
         --asleep_count_;
+        k = next;
+    } while (k != i);
+}
+
+void SleepIslands::fall_asleep(const std::vector<std::uint32_t>& members) {
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        asleep_[members[k]] = 1;
+        ring_[members[k]] = members[(k + 1) % members.size()];
     }
+    asleep_count_ += members.size();
 }
 
 void SleepIslands::update(const ParticleState& s, const std::vector<SolverContact>& contacts, double rest_speed,
                           double h) {
+    // Every contact found has an awake particle (two sleeping ones are not paired): its sleeping
+    // partner's island wakes, as does one struck by an impact or kicked by hand.
+    for (const SolverContact& c : contacts) {
+        wake_island(c.a);
+        if (!c.is_wall()) wake_island(c.b);
+    }
     for (const std::uint32_t i : members_) {
         in_contact_[i] = 0;
         parent_[i] = i;
@@ -45,8 +68,9 @@ void SleepIslands::update(const ParticleState& s, const std::vector<SolverContac
         const std::uint32_t ra = root(c.a), rb = root(c.b);
         if (ra != rb) parent_[std::max(ra, rb)] = std::min(ra, rb);  // the smaller index is the root: order-free
     }
-    // Still time: a particle out of every pair contact, or moving, starts again from zero.
+    // Still time: an awake particle out of every pair contact, or moving, starts again from zero.
     for (std::uint32_t i = 0; i < s.size(); ++i) {
+        if (asleep_[i]) continue;
         if (!in_contact_[i]) {
             still_[i] = 0.0;
             continue;
@@ -60,11 +84,21 @@ void SleepIslands::update(const ParticleState& s, const std::vector<SolverContac
         double& least = island_still_[root(i)];
         least = std::min(least, still_[i]);
     }
-    asleep_count_ = 0;
-    std::fill(asleep_.begin(), asleep_.end(), std::uint8_t{0});
+    // Islands still long enough fall asleep. Each island's particles are chained from its root
+    // (members_ is in contact order, so the rings are the same on every run).
+    for (auto k = members_.rbegin(); k != members_.rend(); ++k) {
+        const std::uint32_t r = root(*k);
+        next_member_[*k] = head_[r];
+        head_[r] = *k;
+    }
     for (const std::uint32_t i : members_) {
-        asleep_[i] = island_still_[root(i)] >= time_to_sleep;
-        asleep_count_ += asleep_[i];
+        if (root(i) != i) continue;
+        if (island_still_[i] >= time_to_sleep) {
+            island_.clear();
+            for (std::uint32_t k = head_[i]; k != none; k = next_member_[k]) island_.push_back(k);
+            fall_asleep(island_);
+        }
+        head_[i] = none;
     }
 }
 

@@ -5,8 +5,9 @@
 // speed and its surface speed of spin stay below the contact's rest speed; an island falls asleep
 // when all its particles have been still for time_to_sleep (Box2D's rule and its 0.5 s,
 // b2_timeToSleep). Asleep, a particle keeps the position it had and no velocity, so a pile that
-// has settled cannot creep. A particle that touches an island (a new contact) joins it with a
-// still time of zero, and the whole island wakes at the end of that step.
+// has settled cannot creep, and the pairs of two sleeping particles are not even looked for. The
+// island is remembered (a ring of its particles): when an awake particle touches one of them, or
+// one is struck or kicked, the whole island wakes at the end of that step.
 #pragma once
 
 #include "physics/collide/contact_solver.hpp"
@@ -23,10 +24,11 @@ public:
 
     explicit SleepIslands(std::size_t particles);
 
-    // After a step of length h: updates each particle's still time from its velocity and spin
-    // and decides who sleeps during the next step. `rest_speed` <= 0: nothing sleeps.
+    // After a step of length h: wakes the islands that were touched, struck or kicked, updates
+    // each awake particle's still time from its velocity and spin, and puts to sleep the islands
+    // still long enough. `rest_speed` <= 0: nothing sleeps.
     void update(const ParticleState& s, const std::vector<SolverContact>& contacts, double rest_speed, double h);
-    // Wakes particle i's island at the next update (an outside change, e.g. a velocity set by hand).
+    // Wakes particle i's island now (its velocity was set from outside, or it was struck).
     void wake(std::uint32_t i);
 
     const std::vector<std::uint8_t>& asleep() const { return asleep_; }
@@ -34,13 +36,19 @@ public:
 
 private:
     std::uint32_t root(std::uint32_t i);
+    void wake_island(std::uint32_t i);
+    void fall_asleep(const std::vector<std::uint32_t>& members);
 
     std::vector<double> still_;           // s each particle has been still in contact
     std::vector<std::uint32_t> parent_;   // union-find over this step's contacts
     std::vector<double> island_still_;    // per root: the least still time of its particles
     std::vector<std::uint8_t> in_contact_;
     std::vector<std::uint8_t> asleep_;
-    std::vector<std::uint32_t> members_;  // particles in some pair contact this step
+    std::vector<std::uint32_t> ring_;     // asleep: the next particle of its island (a ring)
+    std::vector<std::uint32_t> members_;  // awake particles in some pair contact this step
+    static constexpr std::uint32_t none = 0xffffffffu;
+    std::vector<std::uint32_t> head_, next_member_;  // per root: its island's particles, chained
+    std::vector<std::uint32_t> island_;   // scratch: one island's particles
     std::size_t asleep_count_ = 0;
 };
 
