@@ -118,6 +118,29 @@ TEST(AdvisorCollisions, FewSmallBallsInABigRoomDoNotNeedThem) {
     verdict_starting(alone, "collisions: one particle: nothing to collide with");
 }
 
+TEST(AdvisorCollisions, TwoBallsThrownAtEachOtherMeetThoughTheEstimateSaysRarely) {
+    // Head-on at 2 m/s each, 2 m apart at the same height: they meet after 0.5 s, in mid-air.
+    // A gas of two balls in 600 m^3 would hardly ever collide (lambda = 6.8 km): the runs decide.
+    Scene scene;
+    scene.room = big_room().room;
+    scene.particles = {{{-1, 3, 0}, {2, 0, 0}, 0.1, 0.05}, {{1, 3, 0}, {-2, 0, 0}, 0.1, 0.05}};
+    const VariantAdvice v = advise(scene, {}).variants[0];
+    EXPECT_FALSE(v.collisions.matters);
+    EXPECT_LT(v.collisions.total, 0.1);
+    EXPECT_TRUE(v.collisions_recommended);
+    const ModelRun& run = collisions_run(v);
+    EXPECT_TRUE(run.matters);
+    // Closed form: the fall to the floor takes T = sqrt(2 x 2.95 m / g). Without collisions the
+    // left ball lands at -1 + 2 T; with them the two touch when 2 - 4 t = 2 r, at x = -r, and it
+    // leaves at -e x 2 m/s (equal masses, e = 0.9), landing at -r - 1.8 (T - t): 1.14 m apart.
+    const double fall = std::sqrt(2.0 * 2.95 / 9.81), meet = (2.0 - 0.1) / 4.0;
+    const double apart = (-1.0 + 2.0 * fall) - (-0.05 - 0.9 * 2.0 * (fall - meet));
+    EXPECT_NEAR(run.metric(AdviceMetric::landing_point).difference, apart, 0.01);  // a few steps of 2 ms at 2 m/s
+    const std::string& verdict = verdict_starting(v, "collisions matter: measured: ");
+    EXPECT_NE(verdict.find(", although the estimate is "), std::string::npos) << verdict;
+    EXPECT_TRUE(verdict.ends_with("turn them on")) << verdict;
+}
+
 TEST(AdvisorCollisions, FiveHundredBallsOnAQuarterSquareMetreMustStack) {
     Scene scene;
     scene.room.center = {0, 1, 0};

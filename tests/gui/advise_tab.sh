@@ -3,7 +3,7 @@
 # its verdicts: on feather_vs_ball, a vertical drop, drag matters in the air variant by landing
 # time (not by landing point or apex, which do not move), and so do buoyancy (the foam ball is 0.64
 # of the air's density) and added mass; in the vacuum variant drag would change nothing; the two
-# balls, 14 km of mean free path apart, need no collisions.
+# balls (mean free path 14 km) need no collisions.
 # Usage: advise_tab.sh <particle-lab binary> <source dir>
 APP=$1
 SRC=$2
