@@ -231,15 +231,14 @@ void add_advise_command(CLI::App& app, int& exit_code) {
     cmd->footer(
         "Which force terms does this scene need? Runs each variant's trajectories with each term on and\n"
         "off (drag, buoyancy, added mass, ISA air, collisions, wind) and with no, linear (Stokes),\n"
-        "quadratic and sphere_re drag, and\n"
-        "compares landing time, the first three impact speeds, time to rest, range, apex height and\n"
-        "landing point. A term matters when any of them differs by more than max(its tolerance,\n"
-        "--relative-tolerance x the value without the term, or with sphere_re for a drag model); the\n"
-        "verdict names those metrics and by how much (on - off; drag models: model - sphere_re), for\n"
-        "terms the scene has off too. Also reports the Reynolds range, drag/weight,\n"
-        "Mach number and rho_air/rho_particle, and estimates the collision rate from the particle\n"
-        "count, radii and room (mean free path; whether the balls must stack) to recommend collisions\n"
-        "on or off. Runs stop when every particle rests, or at --duration.");
+        "quadratic and sphere_re drag, and compares landing time, the first three impact speeds, time\n"
+        "to rest, range, apex height and landing point. A term matters when any of them differs by\n"
+        "more than max(its tolerance, --relative-tolerance x the value without the term, or with\n"
+        "sphere_re for a drag model); the verdict names those metrics and by how much (on - off; drag\n"
+        "models: model - sphere_re), for terms the scene has off too. Also reports the Reynolds range,\n"
+        "drag/weight, Mach number and rho_air/rho_particle, and estimates the collision rate from the\n"
+        "particle count, radii and room (mean free path; whether the balls must stack) to recommend\n"
+        "collisions on or off. Runs stop when every particle rests, or at --duration.");
     cmd->add_option("PRESET", o->preset, "preset JSON file (-: standard input)")->required();
     add_set_option(cmd, o->sets);
     cmd->add_option("--tolerance", o->advice.tolerance_m, "tolerance of range, apex and landing point, m")
