@@ -1,7 +1,7 @@
 // How often would the particles of a scene meet? The advisor's estimate for its collisions row
 // (advisor_terms.cpp), from kinetic theory of a dilute gas of hard spheres (Chapman & Cowling,
-// "The Mathematical Theory of Non-uniform Gases", 3rd ed. 1970, ch. 5; Reif, "Fundamentals of
-// Statistical and Thermal Physics", 1965, sec. 12.2), plus a check of the settled state: balls
+// "The Mathematical Theory of Non-uniform Gases", 3rd ed. 1970; Reif, "Fundamentals of
+// Statistical and Thermal Physics", 1965, ch. 12), plus a check of the settled state: balls
 // that cannot all lie on the floor in one layer must stack, whatever the rate.
 //
 //   n      = N / V                                   number density, V the room's volume
