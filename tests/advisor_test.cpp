@@ -83,7 +83,7 @@ TEST(Advisor, SlowDenseBallNeedsNoDragUnlessItBouncesLong) {
     EXPECT_LT(v.max_drag_to_weight, 0.01);
     EXPECT_GT(v.re_max, 500.0);  // not Stokes flow, but it does not matter here
     EXPECT_TRUE(v.warnings.empty() || !any_contains(v.warnings, "Mach")) << joined(v.warnings);
-    ASSERT_EQ(v.runs.size(), 9u);  // no drag, linear, quadratic, sphere_re, drag, buoyancy, added mass, ISA, wind
+    ASSERT_EQ(v.runs.size(), 10u);  // no drag, linear, quadratic, sphere_re, drag, buoyancy, added mass, ISA, collisions, wind
     EXPECT_LT(v.runs[0].landing_difference_m, 1e-3);
     EXPECT_EQ(v.runs[3].landing_difference_m, 0.0);  // the reference against itself
     EXPECT_FALSE(v.runs[3].matters);
@@ -122,7 +122,7 @@ TEST(Advisor, WindWithoutDragHasNoEffectAndWindWithDragIsMeasured) {
     ASSERT_EQ(a.variants.size(), 2u);
     EXPECT_TRUE(any_contains(a.variants[0].verdicts, "drag is off, so wind has no effect")) << joined(a.variants[0].verdicts);
     EXPECT_TRUE(any_contains(a.variants[1].verdicts, "wind matters: ")) << joined(a.variants[1].verdicts);
-    ASSERT_EQ(a.variants[1].runs.size(), 9u);
+    ASSERT_EQ(a.variants[1].runs.size(), 10u);
     EXPECT_FALSE(a.variants[1].runs.back().with_wind);
     EXPECT_GT(a.variants[1].runs.back().landing_difference_m, 1e-3);
 }

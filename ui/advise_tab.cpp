@@ -26,6 +26,21 @@ void start_advice(LabSession& s, PanelState& p) {
     });
 }
 
+// The collision estimate's numbers (physics/studies/collision_estimate.hpp), over all particles.
+void collision_estimate(const VariantAdvice& a) {
+    const CollisionEstimate& e = a.collisions;
+    if (!e.applicable) return;
+    ImGui::Text("collisions %s:  %zu particles, volume fraction %.3g, mean free path %.3g m, speed %.3g m/s, "
+                "%.3g collisions per particle over %.3g s, %.3g layers on the floor",
+                a.collisions_recommended ? "recommended" : "not needed", e.particles, e.volume_fraction,
+                e.mean_free_path_m, e.speed_m_s, e.per_particle, e.duration_s, e.layers);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Kinetic theory: mean free path 1/(sqrt 2 n sigma), sigma = pi (r_i + r_j)^2 averaged over pairs,\n"
+                          "speed = rms of each particle's drag-free speed at the floor; layers = sum pi r^2 / (0.84 floor area).\n"
+                          "Collisions are recommended when the balls must stack (more than one layer), when the scene\n"
+                          "expects at least one collision in all, or when the on/off runs differ beyond tolerance.");
+}
+
 void variant_advice(const VariantAdvice& a) {
     const double ratio = a.density_ratio.empty() ? 0.0 : *std::max_element(a.density_ratio.begin(), a.density_ratio.end());
     ImGui::Text("drag %s, wind %s, buoyancy %s:  Re %.3g .. %.3g,  drag/weight up to %.3g,  Mach up to %.3g,  "
@@ -33,6 +48,7 @@ void variant_advice(const VariantAdvice& a) {
                 to_string(a.configured), to_string(a.wind), a.buoyancy ? "on" : "off", a.re_min, a.re_max,
                 a.max_drag_to_weight, a.max_mach, ratio);
     ImGui::Text("cheapest adequate drag model: %s", to_string(a.cheapest_adequate));
+    collision_estimate(a);
     for (const std::string& v : a.verdicts) ImGui::BulletText("%s", v.c_str());
     for (const std::string& w : a.warnings) ImGui::TextColored({1.0f, 0.75f, 0.3f, 1.0f}, "warning: %s", w.c_str());
     // One row per term of the table (physics/studies/advisor_terms.hpp), one column per metric:
@@ -98,7 +114,8 @@ void draw_advise_tab(LabSession& s) {
         note_item_rect(s, "advise.run");
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Runs the scene's own trajectories with each term on and off (drag, buoyancy, wind) and each\n"
+        ImGui::SetTooltip("Runs the scene's own trajectories with each term on and off (drag, buoyancy, added mass, ISA air,\n"
+                          "collisions, wind) and each\n"
                           "drag model against sphere_re, and reports which change landing time, impact speeds, time to\n"
                           "rest, range, apex or landing point by more than the tolerances, like `particle-lab advise`.");
     if (!p.advice.error().empty()) ImGui::TextColored({1, 0.4f, 0.4f, 1}, "%s", p.advice.error().c_str());

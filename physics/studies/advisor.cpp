@@ -11,6 +11,8 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <span>
+#include <string_view>
 
 namespace pl {
 
@@ -145,6 +147,24 @@ std::string verdict(const TermRow& row, const ModelRun& r, const std::string& no
                      : fmt::format("{} is off and would change nothing beyond tolerance {}{}", row.name, most, extra);
 }
 
+// What the runs measured, in words: the metrics beyond tolerance, or the largest within.
+std::string measured_words(const ModelRun& r, const AdviceTolerances& tol) {
+    if (r.matters) return beyond_list(r);
+    return fmt::format("nothing beyond tolerance (largest: {})", describe(largest(r, tol), r.metric(largest(r, tol))));
+}
+
+std::string row_verdict(const TermRow& row, const TermContext& c, const AdviceTolerances& tol) {
+    if (row.own_verdict && c.run.not_applicable.empty()) return row.own_verdict(c);
+    return verdict(row, c.run, row.note ? row.note(c) : std::string(), tol);
+}
+
+std::size_t row_index(const char* name) {
+    const std::span<const TermRow> table = term_table();
+    for (std::size_t k = 0; k < table.size(); ++k)
+        if (std::string_view(table[k].name) == name) return k;
+    return table.size();
+}
+
 void add_warnings(const Model& model, VariantAdvice& a) {
     if (a.max_mach > 0.3)
         a.warnings.push_back(fmt::format("Mach {:.2f}: compressibility is not modelled (unreliable above Mach 0.3)", a.max_mach));
@@ -167,7 +187,9 @@ std::vector<double> density_ratios(const Model& model, const std::vector<Particl
     return r;
 }
 
-VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>& particles, const AdviceOptions& o,
+// `particles`: the ones the runs follow (the first 100); `all`: the scene's, for the collision estimate.
+VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>& particles,
+                             std::span<const ParticleSpec> all, const AdviceOptions& o,
                              const std::function<void(double)>& progress) {
     VariantAdvice a;
     a.label = model.label;
@@ -181,7 +203,9 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
     plan.models.try_emplace(nullptr, model);  // the variant as configured
     const Builder reference = plan.key(model, use_reference_drag);
     // Rows that cannot be judged here (wind in a calm scene) need no runs.
-    auto applicable = [&](const TermRow& row) { return !row.not_applicable || !row.not_applicable(model); };
+    auto applicable = [&](const TermRow& row) {
+        return !row.not_applicable || !row.not_applicable(model, particles.size());
+    };
     std::vector<std::pair<Builder, Builder>> keys;
     for (const TermRow& row : term_table())
         keys.emplace_back(applicable(row) ? plan.key(model, row.measured) : nullptr,
@@ -202,6 +226,11 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
     a.max_mach = ref.max_mach;
     a.stokes_error_factor = sphere_cd_times_re(a.re_max) / 24.0;
 
+    // Over how long the particles move without collisions (the collisions row's baseline run).
+    const double free_s = runs.at(keys[row_index(collisions_term)].second).end_time;
+    a.collisions = estimate_collisions(model, all, free_s);
+    a.collisions.measured_particles = particles.size();
+
     const std::span<const TermRow> table = term_table();
     for (std::size_t k = 0; k < table.size(); ++k) {
         const TermRow& row = table[k];
@@ -213,14 +242,15 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
         r.model = simpler.drag.model;
         r.with_wind = simpler.world.wind.kind != WindKind::none;
         r.buoyancy = simpler.world.buoyancy;
-        if (const char* why = row.not_applicable ? row.not_applicable(model) : nullptr) r.not_applicable = why;
+        if (const char* why = row.not_applicable ? row.not_applicable(model, particles.size()) : nullptr)
+            r.not_applicable = why;
         else compare_runs(runs.at(keys[k].first), runs.at(keys[k].second), tol, r);
         a.runs.push_back(r);
     }
+    const std::size_t collisions_row = row_index(collisions_term);
+    a.collisions_recommended = recommend_collisions(a.collisions, a.runs[collisions_row].matters);
     for (std::size_t k = 0; k < table.size(); ++k)
-        if (table[k].verdict)
-            a.verdicts.push_back(verdict(table[k], a.runs[k],
-                                         table[k].note ? table[k].note({model, a, a.runs[k]}) : std::string(), tol));
+        if (table[k].verdict) a.verdicts.push_back(row_verdict(table[k], {model, a, a.runs[k], measured_words(a.runs[k], tol)}, tol));
 
     // The cheapest drag model whose run stays within tolerance of the reference on every metric.
     for (const ModelRun& r : a.runs)
@@ -241,9 +271,9 @@ Advice advise(const Scene& scene, const AdviceOptions& o) {
     advice.tolerance_m = o.tolerance_m;
     advice.tolerances = o.tolerances();
     advice.max_duration_s = o.max_duration_s;
-    std::vector<ParticleSpec> particles = initial_particles(scene);
-    advice.particles_total = particles.size();
-    if (particles.size() > max_advice_particles) particles.resize(max_advice_particles);
+    const std::vector<ParticleSpec> all = initial_particles(scene);
+    advice.particles_total = all.size();
+    std::vector<ParticleSpec> particles(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(std::min(all.size(), max_advice_particles)));
     advice.particles_used = particles.size();
     const std::size_t variants = variant_count(scene);
     for (std::size_t v = 0; v < variants; ++v) {
@@ -255,7 +285,7 @@ Advice advise(const Scene& scene, const AdviceOptions& o) {
         auto progress = [&](double within) {
             if (o.progress) o.progress((static_cast<double>(v) + within) / static_cast<double>(variants));
         };
-        advice.variants.push_back(advise_variant(model_for_variant(scene, v), particles, o, progress));
+        advice.variants.push_back(advise_variant(model_for_variant(scene, v), particles, all, o, progress));
         // Cancelled during its runs: the variant's advice is from runs cut short.
         if (o.cancel && o.cancel->load(std::memory_order_relaxed)) {
             advice.cancelled = true;

@@ -8,6 +8,7 @@
 
 #include "physics/model/drag.hpp"
 #include "physics/model/scene.hpp"
+#include "physics/studies/collision_estimate.hpp"
 
 #include <array>
 #include <atomic>
@@ -110,6 +111,10 @@ struct VariantAdvice {
     // of the weight (Archimedes).
     std::vector<double> density_ratio;
     std::vector<ModelRun> runs;          // one per table row, in table order
+    // Kinetic-theory estimate of the collision rate over all the scene's particles (not only the
+    // advice's first 100), over the collisions-off run's duration; and the recommendation.
+    CollisionEstimate collisions;
+    bool collisions_recommended = false;
     // max over the trajectory of (sphere_re drag) / (Stokes drag) = Cd(Re) Re / 24
     double stokes_error_factor = 1.0;
     DragModel cheapest_adequate = DragModel::sphere_re;  // cheapest within tolerance of sphere_re

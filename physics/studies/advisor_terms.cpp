@@ -34,7 +34,7 @@ bool as_configured(Model&) { return false; }
 // Drag on: the variant's own drag model, or the reference when it has none.
 bool drag_on(Model& m) { return m.drag.model == DragModel::none && use_reference_drag(m); }
 
-const char* wind_not_applicable(const Model& m) {
+const char* wind_not_applicable(const Model& m, std::size_t) {
     if (m.world.wind.kind == WindKind::none) return "no wind in this scene";
     if (m.drag.model == DragModel::none) return "drag is off, so wind has no effect";
     return nullptr;
@@ -93,7 +93,7 @@ bool air_at_floor(Model& m) {
 
 // A constant air thinner than the ISA's anywhere in the troposphere (a vacuum) is not a standard
 // day at any altitude: the ISA's thinning says nothing about it.
-const char* isa_not_applicable(const Model& m) {
+const char* isa_not_applicable(const Model& m, std::size_t) {
     if (m.world.air.model == AirModel::constant && m.world.air.density_kg_m3 < isa_density(max_base_altitude_m))
         return "the air is thinner than the ISA's anywhere in the troposphere";
     return nullptr;
@@ -108,9 +108,30 @@ std::string isa_note(const TermContext& c) {
                        air.base_altitude_m, 100.0 * (1.0 - ceiling / floor));
 }
 
+const char* collisions_not_applicable(const Model&, std::size_t particles) {
+    return particles < 2 ? "one particle: nothing to collide with" : nullptr;
+}
+
+// Collisions: the estimate (collision_estimate.hpp) and the measured runs each can say they
+// matter; the verdict gives the estimate's reason and what the runs measured.
+std::string collisions_verdict(const TermContext& c) {
+    const CollisionEstimate& e = c.advice.collisions;
+    const bool on = recommend_collisions(e, c.run.matters);
+    std::string measured = "measured";
+    if (e.measured_particles < e.particles)
+        measured += fmt::format(" on the first {} of {} particles (fewer collisions than the whole scene)",
+                                e.measured_particles, e.particles);
+    measured += ": " + c.measured;
+    const char* action = c.run.in_scene ? (on ? "keep them on" : "they could be turned off")
+                                        : (on ? "turn them on" : "leave them off");
+    if (e.matters) return fmt::format("collisions matter: {}; {}: {}", collision_reason(e), measured, action);
+    if (on) return fmt::format("collisions matter: {}, although the estimate is {}: {}", measured, collision_reason(e), action);
+    return fmt::format("collisions do not matter: {}; {}: {}", collision_reason(e), measured, action);
+}
+
 // The rows, in the order of the verdicts and of the JSON's "runs": first each drag model against
 // the reference (the reference itself last, all zeros), then the toggles.
-const std::array<TermRow, 9> rows = {{
+const std::array<TermRow, 10> rows = {{
     {"no drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::none; },
      use_drag<DragModel::none>, use_reference_drag, nullptr, nullptr, false},
     {"linear drag", TermKind::alternative, [](const Model& m) { return m.drag.model == DragModel::linear; },
@@ -129,6 +150,9 @@ const std::array<TermRow, 9> rows = {{
      nullptr, added_mass_note},
     {"ISA air (thinning with height)", TermKind::toggle, [](const Model& m) { return m.world.air.model == AirModel::isa; },
      isa_air, air_at_floor, isa_not_applicable, isa_note},
+    {collisions_term, TermKind::toggle, [](const Model& m) { return m.collisions.enabled; },
+     [](Model& m) { return set(m.collisions.enabled, true); }, [](Model& m) { return set(m.collisions.enabled, false); },
+     collisions_not_applicable, nullptr, true, collisions_verdict},
     // Wind last: the runs of a scene with wind end with the calm run.
     {"wind", TermKind::toggle, [](const Model& m) { return m.world.wind.kind != WindKind::none; }, as_configured,
      [](Model& m) { return set(m.world.wind.kind, WindKind::none); }, wind_not_applicable, nullptr},

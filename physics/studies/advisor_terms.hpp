@@ -12,6 +12,7 @@
 // Adding a term is one row in term_table() (advisor_terms.cpp): a name, whether the variant has
 // it, the builders of the measured and the baseline model, and optionally why it cannot be judged
 // and an extra clause for its verdict (see the buoyancy and added-mass rows).
+// A row can also write its whole verdict (see the collisions row).
 // Toggle verdicts read "<name> matters: ...", "<name> is off but would change ...: turn it on".
 #pragma once
 
@@ -35,6 +36,9 @@ struct TermContext {
     const Model& variant;
     const VariantAdvice& advice;  // the dimensionless numbers (Re, drag/weight, density ratios)
     const ModelRun& run;          // this row's comparison
+    // The measured differences in words: the metrics beyond tolerance, or "nothing beyond
+    // tolerance (largest: ...)".
+    const std::string& measured;
 };
 
 struct TermRow {
@@ -44,12 +48,16 @@ struct TermRow {
     bool (*measured)(Model&);              // builds the measured model from a copy of the variant
     bool (*baseline)(Model&);              // builds the baseline model from a copy of the variant
     // nullptr, or a function returning why the term cannot be judged here (nullptr: it can).
-    const char* (*not_applicable)(const Model& variant);
+    // `particles`: how many the runs follow.
+    const char* (*not_applicable)(const Model& variant, std::size_t particles);
     // nullptr, or an extra clause for the verdict ("max drag/weight = 0.4").
     std::string (*note)(const TermContext&);
     // false: the row is data only (the JSON's runs), its verdict is another row's (no drag: the
     // drag toggle) or there is none (the reference against itself).
     bool verdict = true;
+    // nullptr, or the whole verdict in place of the toggle's words (collisions: the estimate
+    // recommends, the runs measure).
+    std::string (*own_verdict)(const TermContext&) = nullptr;
 };
 
 // The reference the alternative rows compare against: sphere_re, the variant's own settings if it
@@ -64,5 +72,8 @@ DragSettings candidate_drag(DragModel model, const DragSettings& configured);
 bool use_reference_drag(Model& m);
 
 std::span<const TermRow> term_table();
+
+// The collisions row's name: the advisor finds its run to size the collision estimate's duration.
+inline constexpr const char* collisions_term = "collisions";
 
 }  // namespace pl

@@ -137,7 +137,8 @@ nlohmann::json measure_json(const ui::LabSession& s, const ViewSnapshot& view) {
 }
 
 // The file dialog while it shows (null otherwise): mode, folder, filename, the overwrite question.
-// The Advise tab's last result: per variant its verdicts and the terms that matter.
+// The Advise tab's last result: per variant its verdicts, the terms that matter and whether it
+// recommends collisions.
 nlohmann::json advice_json(const ui::LabSession& s) {
     nlohmann::json j = {{"running", false}, {"variants", nlohmann::json::array()}};
     if (!s.panels) return j;
@@ -147,7 +148,9 @@ nlohmann::json advice_json(const ui::LabSession& s) {
         nlohmann::json matters = nlohmann::json::array();
         for (const ModelRun& r : v.runs)
             if (r.matters) matters.push_back(r.term);
-        j["variants"].push_back({{"verdicts", v.verdicts}, {"matters", matters}});
+        j["variants"].push_back({{"verdicts", v.verdicts},
+                                 {"matters", matters},
+                                 {"collisions_recommended", v.collisions_recommended}});
     }
     return j;
 }

@@ -79,6 +79,35 @@ Json run_json(const ModelRun& r) {
     return jr;
 }
 
+// The collision estimate (physics/studies/collision_estimate.hpp) and the recommendation; the
+// numbers are null with fewer than two particles.
+Json collisions_json(const VariantAdvice& va) {
+    const CollisionEstimate& e = va.collisions;
+    auto number = [&](double v) { return optional_number(e.applicable && std::isfinite(v), v); };
+    Json c;
+    c["applicable"] = e.applicable;
+    c["particles"] = e.particles;
+    c["measured_particles"] = e.measured_particles;
+    c["room_volume_m3"] = number(e.room_volume_m3);
+    c["number_density_m3"] = number(e.number_density_m3);
+    c["volume_fraction"] = number(e.volume_fraction);
+    c["cross_section_m2"] = number(e.cross_section_m2);
+    c["mean_free_path_m"] = number(e.mean_free_path_m);
+    c["speed_m_s"] = number(e.speed_m_s);
+    c["rate_per_s"] = number(e.rate_per_s);
+    c["duration_s"] = number(e.duration_s);
+    c["expected_per_particle"] = number(e.per_particle);
+    c["expected_total"] = number(e.total);
+    c["floor_area_m2"] = number(e.floor_area_m2);
+    c["footprint_m2"] = number(e.footprint_m2);
+    c["layers"] = number(e.layers);
+    c["must_stack"] = e.must_stack;
+    c["estimate_matters"] = e.matters;
+    c["recommended"] = va.collisions_recommended;
+    c["reason"] = collision_reason(e);
+    return c;
+}
+
 // The --json document; --csv writes its "variants" with one row per model run (io/json_csv.hpp).
 Json advice_json(const Scene& scene, const Advice& a) {
     Json j = json_document();
@@ -107,6 +136,7 @@ Json advice_json(const Scene& scene, const Advice& a) {
         x["cheapest_adequate_drag"] = to_string(va.cheapest_adequate);
         x["simulated_s"] = va.simulated_s;
         x["density_ratio"] = va.density_ratio;
+        x["collisions"] = collisions_json(va);
         Json runs = Json::array();
         for (const ModelRun& r : va.runs) runs.push_back(run_json(r));
         x["runs"] = runs;
@@ -125,6 +155,20 @@ std::string cell(const MetricDelta& d) {
            (d.beyond_tolerance ? "*" : "");
 }
 
+// One line: the estimate's numbers, over all the scene's particles.
+void print_collision_estimate(const VariantAdvice& va) {
+    const CollisionEstimate& e = va.collisions;
+    if (!e.applicable) {
+        std::printf("  collisions: %s\n", collision_reason(e).c_str());
+        return;
+    }
+    std::printf("  collisions (estimate, %zu particles): n %s /m^3, volume fraction %s, mean free path %s m, speed %s m/s, "
+                "%s per particle over %s s; %s layers on the floor; recommended %s\n",
+                e.particles, sig(e.number_density_m3, 3).c_str(), sig(e.volume_fraction, 3).c_str(),
+                sig(e.mean_free_path_m, 3).c_str(), sig(e.speed_m_s, 3).c_str(), sig(e.per_particle, 3).c_str(),
+                sig(e.duration_s, 3).c_str(), sig(e.layers, 3).c_str(), va.collisions_recommended ? "on" : "off");
+}
+
 void print_variant(const Scene& scene, std::size_t v, const VariantAdvice& va) {
     std::printf("\nvariant %s  (drag %s, wind %s, buoyancy %s)\n", variant_name(scene, v).c_str(), to_string(va.configured),
                 to_string(va.wind), va.buoyancy ? "on" : "off");
@@ -133,6 +177,7 @@ void print_variant(const Scene& scene, std::size_t v, const VariantAdvice& va) {
                 sig(va.max_mach, 3).c_str(),
                 sig(va.density_ratio.empty() ? 0.0 : *std::max_element(va.density_ratio.begin(), va.density_ratio.end()), 3)
                     .c_str());
+    print_collision_estimate(va);
     Table t;
     t.header = {"  term", "in scene"};
     for (AdviceMetric m : advice_metrics) t.header.push_back(fmt::format("{} {}", to_string(m), unit_of(m)));
@@ -185,13 +230,15 @@ void add_advise_command(CLI::App& app, int& exit_code) {
     CLI::App* cmd = app.add_subcommand("advise", "which force terms this scene needs, and why");
     cmd->footer(
         "Which force terms does this scene need? Runs each variant's trajectories with each term on and\n"
-        "off (drag, buoyancy, wind) and with no, linear (Stokes), quadratic and sphere_re drag, and\n"
-        "compares landing time, the first three impact speeds, time to rest, range, apex height and\n"
-        "landing point. A term matters when any of them differs by more than max(its tolerance,\n"
-        "--relative-tolerance x the value without the term, or with sphere_re for a drag model); the\n"
-        "verdict names those metrics and by how much (on - off; drag models: model - sphere_re), for\n"
-        "terms the scene has off too. Also reports the Reynolds range, drag/weight,\n"
-        "Mach number and rho_air/rho_particle. Runs stop when every particle rests, or at --duration.");
+        "off (drag, buoyancy, added mass, ISA air, collisions, wind) and with no, linear (Stokes),\n"
+        "quadratic and sphere_re drag, and compares landing time, the first three impact speeds, time\n"
+        "to rest, range, apex height and landing point. A term matters when any of them differs by\n"
+        "more than max(its tolerance, --relative-tolerance x the value without the term, or with\n"
+        "sphere_re for a drag model); the verdict names those metrics and by how much (on - off; drag\n"
+        "models: model - sphere_re), for terms the scene has off too. Also reports the Reynolds range,\n"
+        "drag/weight, Mach number and rho_air/rho_particle, and estimates the collision rate from the\n"
+        "particle count, radii and room (mean free path; whether the balls must stack) to recommend\n"
+        "collisions on or off. Runs stop when every particle rests, or at --duration.");
     cmd->add_option("PRESET", o->preset, "preset JSON file (-: standard input)")->required();
     add_set_option(cmd, o->sets);
     cmd->add_option("--tolerance", o->advice.tolerance_m, "tolerance of range, apex and landing point, m")

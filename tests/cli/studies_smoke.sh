@@ -40,6 +40,24 @@ d = json.load(open(sys.argv[1]))
 v = d["variants"][0]
 assert [r["drag"] for r in v["runs"]][:4] == ["none", "linear", "quadratic", "sphere_re"]
 assert v["reynolds_max"] > 1e3 and any("linear drag is wrong here" in s for s in v["verdicts"]), v["verdicts"]
+c = v["collisions"]  # one particle: the collisions row is not judged
+assert not c["applicable"] and c["mean_free_path_m"] is None and not c["recommended"], c
+assert "collisions: one particle: nothing to collide with" in v["verdicts"], v["verdicts"]
+PY
+
+# Sixteen pool balls on a table: collisions recommended, with the estimate and the measured runs.
+"$bin" advise "$src/presets/pool_break.json" --json > "$tmp/pool.json"
+python3 - "$tmp/pool.json" <<'PY'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+for v in d["variants"]:
+    c = v["collisions"]
+    assert c["applicable"] and c["particles"] == 16 and c["recommended"], c
+    lam = 1 / (math.sqrt(2) * c["number_density_m3"] * c["cross_section_m2"])
+    assert abs(c["mean_free_path_m"] - lam) < 1e-9 * lam, c
+    run = {r["term"]: r for r in v["runs"]}["collisions"]
+    assert run["matters"], run
+    assert any(s.startswith("collisions matter: ") for s in v["verdicts"]), v["verdicts"]
 PY
 
 # A vertical drop: judged by landing time and impact speed, for drag (on in the air variant, off

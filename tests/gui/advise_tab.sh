@@ -2,7 +2,8 @@
 # The Advise tab runs `particle-lab advise`'s code on the open scene in the background and shows
 # its verdicts: on feather_vs_ball, a vertical drop, drag matters in the air variant by landing
 # time (not by landing point or apex, which do not move), and so do buoyancy (the foam ball is 0.64
-# of the air's density) and added mass; in the vacuum variant drag would change nothing.
+# of the air's density) and added mass; in the vacuum variant drag would change nothing; the two
+# balls (mean free path 14 km) need no collisions.
 # Usage: advise_tab.sh <particle-lab binary> <source dir>
 APP=$1
 SRC=$2
@@ -22,5 +23,7 @@ json_check "$STATE" 'any(v.startswith("drag is off and would change nothing beyo
     "the vacuum variant's verdicts do not say that drag would change nothing"
 json_check "$STATE" '"buoyancy" in d["advice"]["variants"][0]["matters"] and "added mass" in d["advice"]["variants"][0]["matters"]' \
     "buoyancy and added mass are not among the terms that matter"
+json_check "$STATE" 'any(v.startswith("collisions do not matter: ") for v in d["advice"]["variants"][0]["verdicts"]) and not d["advice"]["variants"][0]["collisions_recommended"]' \
+    "the collisions row does not say that the feather and the ball need no collisions"
 quit_app
 echo "OK"
