@@ -42,10 +42,10 @@ Gas dilute_gas(std::size_t n, bool collisions) {
     return g;
 }
 
-void run_gas(benchmark::State& state, std::size_t n, bool collisions) {
+void run_gas(benchmark::State& state, std::size_t n, bool collisions, int threads = 1) {
     const Gas g = dilute_gas(n, collisions);
     Simulation sim(g.model, g.particles);
-    sim.set_threads(1);
+    sim.set_threads(threads);
     sim.step_n(10);  // the collision pass's buffers reach their size
     for (auto _ : state) sim.step();
     state.counters[rate_counter] =
@@ -127,6 +127,10 @@ void register_collision_benchmarks() {
         for (const bool on : {false, true})
             benchmark::RegisterBenchmark(("collisions/gas/" + std::string(on ? "on" : "off") + "/n:" + std::to_string(n)).c_str(),
                                          [n, on](benchmark::State& s) { run_gas(s, n, on); })
+                ->UseRealTime();
+        if (n >= 10000)  // the same with collisions on two threads (the scaling)
+            benchmark::RegisterBenchmark(("collisions/gas/on/threads:2/n:" + std::to_string(n)).c_str(),
+                                         [n](benchmark::State& s) { run_gas(s, n, true, 2); })
                 ->UseRealTime();
         benchmark::RegisterBenchmark(("collisions/pairs/grid/n:" + std::to_string(n)).c_str(),
                                      [n](benchmark::State& s) { run_pairs(s, n, true); })

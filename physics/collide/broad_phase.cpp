@@ -1,5 +1,7 @@
 #include "physics/collide/broad_phase.hpp"
 
+#include "physics/stepping/thread_pool.hpp"
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -81,16 +83,13 @@ void BroadPhase::build_grid(const SweptBoxes& boxes) {
     }
 }
 
-void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep) {
-    pairs.clear();
-    big_.clear();
-    if (boxes.ids.size() < 2) return;
-    build_grid(boxes);
+void BroadPhase::scan_slots(std::size_t begin, std::size_t end, const std::uint8_t* asleep,
+                            std::vector<Pair>& pairs) const {
     auto sleeps = [asleep](std::uint32_t i) { return asleep && asleep[i]; };
     // Slot by slot, so that consecutive particles share their neighbour buckets in cache. An awake
     // particle takes the pairs with higher awake ids and with every sleeping one (which does not
     // scan), so each pair is met once.
-    for (std::size_t a = 0; a < sorted_.size(); ++a) {
+    for (std::size_t a = begin; a < end; ++a) {
         // A box no larger than a cell overlaps only boxes whose centres lie in the 27 cells around
         // its own centre's cell. Cells sharing a bucket are told apart by their coordinates, so
         // each neighbour is met once even when a bucket is scanned for two cells.
@@ -112,6 +111,28 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
                             pairs.push_back({std::min(i, j), std::max(i, j)});
                     }
                 }
+    }
+}
+
+void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
+                            std::size_t threads) {
+    pairs.clear();
+    big_.clear();
+    if (boxes.ids.size() < 2) return;
+    build_grid(boxes);
+    auto sleeps = [asleep](std::uint32_t i) { return asleep && asleep[i]; };
+    // Below a few thousand particles a thread costs more to wake than its share saves.
+    const std::size_t slices = threads > 1 && sorted_.size() >= 4096 ? 4 * threads : 1;
+    if (slices == 1) {
+        scan_slots(0, sorted_.size(), asleep, pairs);
+    } else {
+        slice_pairs_.resize(slices);
+        auto task = [&](std::size_t k) {
+            slice_pairs_[k].clear();
+            scan_slots(sorted_.size() * k / slices, sorted_.size() * (k + 1) / slices, asleep, slice_pairs_[k]);
+        };
+        ThreadPool::shared().run(slices, threads, task);
+        for (const std::vector<Pair>& slice : slice_pairs_) pairs.insert(pairs.end(), slice.begin(), slice.end());
     }
     // Big particles against all: a pair of two big ones is taken from the side that would take it
     // in the grid (the lower awake id, or the awake one).

@@ -43,7 +43,10 @@ public:
     // call to call: after the first steps it allocates nothing. With `asleep` (1 per particle
     // index for a sleeping one), pairs of two sleeping particles are left out: only the awake
     // particles scan their neighbours, so a pile asleep costs the grid's build and no more.
-    void find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep = nullptr);
+    // `threads` > 1 scans the grid in that many threads' share of slices (the pairs are sorted
+    // at the end, so the result is the same on any number).
+    void find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep = nullptr,
+                    std::size_t threads = 1);
 
     double cell_size() const { return cell_; }           // of the last call
     std::size_t big_count() const { return big_.size(); }  // particles tested against all, last call
@@ -52,6 +55,7 @@ private:
     using Cell = std::array<std::int64_t, 3>;
     Cell cell_of(const SweptBoxes& boxes, std::uint32_t i) const;  // of the box's centre
     void build_grid(const SweptBoxes& boxes);
+    void scan_slots(std::size_t begin, std::size_t end, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
     std::size_t bucket_of(std::int64_t ix, std::int64_t iy, std::int64_t iz) const;
 
     double cell_ = 0.0;
@@ -66,6 +70,7 @@ private:
     // consecutive memory and neighbouring particles are scanned one after the other.
     std::vector<Cell> slot_cell_;
     std::vector<double> slot_lo_[3], slot_hi_[3];
+    std::vector<std::vector<Pair>> slice_pairs_;  // per slice of slots, when threaded
 };
 
 // The reference: every pair tested, O(n^2).

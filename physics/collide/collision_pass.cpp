@@ -3,6 +3,7 @@
 #include "physics/collide/narrow_phase.hpp"
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/energy.hpp"
+#include "physics/stepping/thread_pool.hpp"
 
 #include <algorithm>
 #include <tuple>
@@ -152,7 +153,27 @@ void CollisionPass::keep_rest_on_walls(ParticleState& s, double impact) {
     }
 }
 
-std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, double h) {
+void CollisionPass::find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads) {
+    // Each pair's first contact along the current paths; threaded in slices of pairs (the hits
+    // are sorted afterwards, so the result is the same on any number of threads).
+    hits_.clear();
+    const std::size_t slices = threads > 1 && pairs_.size() >= 4096 ? 4 * threads : 1;
+    auto scan = [&](std::size_t begin, std::size_t end, std::vector<Hit>& out) {
+        Hit hit;
+        for (std::size_t k = begin; k < end; ++k)
+            if (find_hit(s, pairs_[k], h, spin, impact, hit)) out.push_back(hit);
+    };
+    if (slices == 1) return scan(0, pairs_.size(), hits_);
+    slice_hits_.resize(slices);
+    auto task = [&](std::size_t k) {
+        slice_hits_[k].clear();
+        scan(pairs_.size() * k / slices, pairs_.size() * (k + 1) / slices, slice_hits_[k]);
+    };
+    ThreadPool::shared().run(slices, threads, task);
+    for (const std::vector<Hit>& slice : slice_hits_) hits_.insert(hits_.end(), slice.begin(), slice.end());
+}
+
+std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, double h, std::size_t threads) {
     for (const Pair& p : pairs_)
         for (const std::uint32_t i : {p.a, p.b}) {
             path_start_[i] = start_[i];
@@ -163,10 +184,7 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
     const double impact = impact_speed(m, h);
     std::uint64_t impulses = 0;
     for (std::uint32_t pass = 1; pass <= static_cast<std::uint32_t>(max_passes); ++pass) {
-        hits_.clear();
-        Hit hit;
-        for (const Pair& p : pairs_)
-            if (find_hit(s, p, h, spin, impact, hit)) hits_.push_back(hit);
+        find_hits(s, h, spin, impact, threads);
         if (hits_.empty()) break;
         std::sort(hits_.begin(), hits_.end(), [](const Hit& x, const Hit& y) {
             return x.t != y.t ? x.t < y.t : (x.a != y.a ? x.a < y.a : x.b < y.b);
@@ -184,13 +202,13 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
     return impulses;
 }
 
-std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h) {
+std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h, std::size_t threads) {
     for (const std::uint32_t i : moved_) touched_[i] = 0;
     moved_.clear();
     hold_sleepers(s);
     build_boxes(s);
-    broad_.find_pairs(boxes_, pairs_, islands_.asleep().data());
-    const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h);
+    broad_.find_pairs(boxes_, pairs_, islands_.asleep().data(), threads);
+    const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
     solver_.gather(s, m, pairs_, moved_, islands_.asleep(), h, impact_speed(m, h));
     resting_ = solver_.solve(s, m, h, start_velocity_, start_spin_);

@@ -42,8 +42,11 @@ public:
     // Remembers where each particle starts the step.
     void begin_step(const ParticleState& s);
     // Resolves the collisions of the step of length h just taken (s holds its end state). Returns
-    // the number of impacts resolved; `moved()` lists the particles whose velocity changed.
-    std::uint64_t end_step(ParticleState& s, const Model& m, double h);
+    // the number of impacts resolved; `moved()` lists the particles whose velocity changed. The
+    // broad phase and the search for impacts run on up to `threads` threads; the impulses, the
+    // contact solver and the islands on the calling thread, in a fixed order: the same bits on
+    // any number of threads.
+    std::uint64_t end_step(ParticleState& s, const Model& m, double h, std::size_t threads = 1);
     // Wakes the island of particle i (its velocity was set from outside).
     void wake(std::uint32_t i) { islands_.wake(i); }
 
@@ -71,7 +74,8 @@ private:
     Vec3 at(std::uint32_t i, double t) const { return path_start_[i] + (t - path_time_[i]) * path_rate_[i]; }
     bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const;
     void hold_sleepers(ParticleState& s);
-    std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h);
+    void find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
+    std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, std::size_t threads);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
     void remove_overlaps(ParticleState& s, const Model& m);
     void keep_rest_on_walls(ParticleState& s, double impact);
@@ -89,6 +93,7 @@ private:
     BroadPhase broad_;
     std::vector<Pair> pairs_;
     std::vector<Hit> hits_;
+    std::vector<std::vector<Hit>> slice_hits_;  // per slice of pairs, when threaded
     ContactSolver solver_;
     SleepIslands islands_;
     std::uint64_t resting_ = 0;

@@ -7,6 +7,7 @@
 #include "physics/model/terms/term_list.hpp"
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/energy.hpp"
+#include "physics/stepping/fast_kernel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -112,7 +113,7 @@ void Simulation::run_until(double t) {
 void Simulation::collide_step() {
     collisions_->begin_step(state_);
     kernel_(context(), 1);
-    collisions_last_step_ = collisions_->end_step(state_, model_, dt());
+    collisions_last_step_ = collisions_->end_step(state_, model_, dt(), thread_count(threads_));
     collisions_total_ += collisions_last_step_;
     for (const std::uint32_t i : collisions_->moved()) release_from_walls(i, state_.velocity(i));
 }
