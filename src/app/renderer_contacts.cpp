@@ -67,8 +67,9 @@ std::size_t append_contacts(const Experiment& e, std::optional<std::size_t> only
 }
 
 glm::vec3 sleeping_tint(glm::vec3 own) {
-    const glm::vec3 slate(0.40f, 0.47f, 0.58f);
-    return glm::mix(slate, own, 0.2f);
+    // Grey enough that it reads as asleep next to the palette's blue (variant 0, particle 0) too.
+    const glm::vec3 slate(0.46f, 0.50f, 0.57f);
+    return glm::mix(slate, own, 0.15f);
 }
 
 }  // namespace pl::app

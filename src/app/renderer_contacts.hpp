@@ -20,8 +20,8 @@ constexpr std::size_t max_contact_segments = 100'000;
 // white), so the chains that carry a pile's weight stand out. Returns the contacts appended.
 std::size_t append_contacts(const Experiment& e, std::optional<std::size_t> only_variant, LineSegments& out);
 
-// A sleeping particle's colour: mostly slate blue-grey, a fifth of its own colour kept so that
-// variants stay told apart.
+// A sleeping particle's colour: mostly slate blue-grey, 15% of its own colour kept so that
+// overlaid variants stay told apart.
 glm::vec3 sleeping_tint(glm::vec3 own);
 
 }  // namespace pl::app
