@@ -34,6 +34,15 @@ glm::vec4 load_color(double share) {
     return glm::vec4(glm::mix(light, heavy, f), 0.1f + 0.9f * f);
 }
 
+// Loaded, and still where the step left it: a particle launched, kicked or dragged since (paused,
+// say) has moved away from the neighbours its listed contacts name.
+bool drawable(const ParticleState& s, const SolverContact& c) {
+    if (!(c.lambda_n > 0.0)) return false;
+    if (c.is_wall()) return true;
+    const double reach = s.radius[c.a] + s.radius[c.b];
+    return glm::length(s.position(c.b) - s.position(c.a)) <= 1.5 * reach;
+}
+
 void append_contact(const ParticleState& s, const SolverContact& c, glm::vec4 color, LineSegments& out) {
     const glm::vec3 a(s.position(c.a));
     const glm::vec3 b = c.is_wall() ? a + glm::vec3(c.n) * static_cast<float>(s.radius[c.a]) : glm::vec3(s.position(c.b));
@@ -45,9 +54,9 @@ void append_contact(const ParticleState& s, const SolverContact& c, glm::vec4 co
 std::size_t append_contacts(const Experiment& e, std::optional<std::size_t> only_variant, LineSegments& out) {
     double heaviest = 0.0;
     std::size_t loaded = 0;
-    for_each_contact_list(e, only_variant, [&](const ParticleState&, const std::vector<SolverContact>& list) {
+    for_each_contact_list(e, only_variant, [&](const ParticleState& s, const std::vector<SolverContact>& list) {
         for (const SolverContact& c : list) {
-            if (!(c.lambda_n > 0.0)) continue;
+            if (!drawable(s, c)) continue;
             heaviest = std::max(heaviest, c.lambda_n);
             ++loaded;
         }
@@ -58,7 +67,7 @@ std::size_t append_contacts(const Experiment& e, std::optional<std::size_t> only
     out.reserve(out.size() + 2 * (loaded / stride + 1));
     for_each_contact_list(e, only_variant, [&](const ParticleState& s, const std::vector<SolverContact>& list) {
         for (const SolverContact& c : list) {
-            if (!(c.lambda_n > 0.0) || seen++ % stride != 0) continue;
+            if (!drawable(s, c) || seen++ % stride != 0) continue;
             append_contact(s, c, load_color(c.lambda_n / heaviest), out);
             ++drawn;
         }

@@ -17,7 +17,9 @@ constexpr std::size_t max_contact_segments = 100'000;
 // Contacts of the last step that carried a load (lambda_n > 0) in the variants a pane shows: a
 // pair as a line between the two centres, a wall contact from the centre to the contact point.
 // Colour and opacity grow with lambda_n over the largest lambda_n in the pane (faint amber to
-// white), so the chains that carry a pile's weight stand out. Returns the contacts appended.
+// white), so the chains that carry a pile's weight stand out. A pair whose centres are now apart
+// by more than 1.5 times their contact distance is left out: one of them was launched or kicked
+// after the step (the pair is listed again, or not, at the next). Returns the contacts appended.
 std::size_t append_contacts(const Experiment& e, std::optional<std::size_t> only_variant, LineSegments& out);
 
 // A sleeping particle's colour: mostly slate blue-grey, 15% of its own colour kept so that
