@@ -92,6 +92,8 @@ struct LabSession {
     int trail_particles = 16;                  // trails (and drop lines) for the first N particles of each variant
     bool show_velocity = false;                // velocity arrows on the particles
     bool show_wind = false;                    // wind field arrows on a grid
+    bool show_contacts = false;                // collision contacts as lines, coloured by their load
+    bool tint_sleeping = false;                // sleeping particles (collisions' islands at rest) in a slate tint
     bool split_view = false;                   // one viewport per variant (up to 9) instead of overlaid
     std::vector<int> split_variants;           // the variants the split view shows (empty: the first 9)
     bool measuring = false;                    // M: clicks in the view pick points to measure between

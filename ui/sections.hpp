@@ -38,6 +38,9 @@ void draw_unsaved_prompt(LabSession& s);
 std::string variant_name(const LabSession& s, std::size_t v);  // label, or "variant N"
 std::size_t warning_count(const LabSession& s);  // warnings that put a number at risk (warning_risk.hpp)
 std::size_t note_count(const LabSession& s);     // the others: out of range with a negligible error
+// The status bar's collision counters summed over the variants: "N collisions (M in the last
+// step) · R resting contacts · S asleep"; empty when no variant has collisions on.
+std::string collision_status(const LabSession& s);
 // Records the last item's screen rectangle under `name` in s.widget_rects, if it is visible.
 void note_item_rect(LabSession& s, const std::string& name);
 // Saves the scene to `file`; false (and an error dialog) when it cannot.

@@ -1,6 +1,7 @@
 #include "app/scene_renderer.hpp"
 
 #include "app/renderer_arrows.hpp"
+#include "app/renderer_contacts.hpp"
 #include "app/renderer_trails.hpp"
 #include "ui/palette.hpp"
 
@@ -11,17 +12,24 @@ namespace pl::app {
 
 namespace {
 
-void build_instances(const Experiment& e, std::optional<std::size_t> only_variant, std::vector<SphereInstance>& out) {
+// The particles of the variants a pane shows, in their series colours; with `tint_sleeping`,
+// those asleep in the slate tint (a run without collisions has no sleep flags: nothing to tint).
+void build_instances(const Experiment& e, std::optional<std::size_t> only_variant, bool tint_sleeping,
+                     std::vector<SphereInstance>& out) {
     out.clear();
     const std::size_t variants = e.variant_count();
     for (std::size_t v = 0; v < variants; ++v) {
         if (only_variant && v != *only_variant) continue;
         const ParticleState& s = e.run(v).state();
+        const std::vector<std::uint8_t>* asleep = tint_sleeping ? &e.run(v).asleep() : nullptr;
+        if (asleep && asleep->size() != s.size()) asleep = nullptr;
         for (std::size_t i = 0; i < s.size(); ++i) {
             const ui::Rgb c = ui::series_color(variants, v, i);
+            glm::vec3 color(c.r, c.g, c.b);
+            if (asleep && (*asleep)[i]) color = sleeping_tint(color);
             out.push_back({glm::vec4(static_cast<float>(s.x[i]), static_cast<float>(s.y[i]), static_cast<float>(s.z[i]),
                                      static_cast<float>(s.radius[i])),
-                           glm::vec4(c.r, c.g, c.b, 1.0f)});
+                           glm::vec4(color, 1.0f)});
         }
     }
 }
@@ -69,7 +77,7 @@ void SceneRenderer::draw_pane(const ui::LabSession& session, const TrailHistory&
     RoomRenderer::append_floor_grid(room, segments_);
     lines_.draw(segments_, cam.view_proj, viewport, 1.0f);
 
-    build_instances(e, pane.variant, instance_scratch_);
+    build_instances(e, pane.variant, session.tint_sleeping, instance_scratch_);
     instances_.upload(instance_scratch_);
     const bool many = instance_scratch_.size() > max_mesh_spheres;
     if (!many)
@@ -106,10 +114,21 @@ void SceneRenderer::draw_pane(const ui::LabSession& session, const TrailHistory&
             append_wind_arrows(e, *variant, view_dir, segments_);
         lines_.draw(segments_, cam.view_proj, viewport, 1.4f);
     }
+    if (session.show_contacts) draw_contacts(e, pane, cam, viewport);
     segments_.clear();
     RoomRenderer::append_edges(room, segments_);
     lines_.draw(segments_, cam.view_proj, viewport, 1.5f);
     glDepthMask(GL_TRUE);
+}
+
+// Through the balls (a contact's line lies inside its two spheres, so the depth test would hide
+// it): one batched draw of the pane's loaded contacts.
+void SceneRenderer::draw_contacts(const Experiment& e, const ViewPane& pane, const CameraMatrices& cam, glm::vec2 viewport) {
+    segments_.clear();
+    if (append_contacts(e, pane.variant, segments_) == 0) return;
+    glDisable(GL_DEPTH_TEST);
+    lines_.draw(segments_, cam.view_proj, viewport, 1.5f);
+    glEnable(GL_DEPTH_TEST);
 }
 
 }  // namespace pl::app

@@ -37,6 +37,7 @@ public:
 private:
     void draw_pane(const ui::LabSession& session, const TrailHistory& trails, const ViewPane& pane,
                    const OrbitCamera& camera, const FramebufferMapping& fb);
+    void draw_contacts(const Experiment& e, const ViewPane& pane, const CameraMatrices& cam, glm::vec2 viewport);
 
     InstanceBuffer instances_;
     SphereRenderer spheres_;

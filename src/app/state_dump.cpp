@@ -46,7 +46,9 @@ nlohmann::json variant_json(const Simulation& sim, std::size_t variant, const Vi
                              {"frozen", st.frozen[i] != 0},
                              {"screen", screen_position(view, variant, st.position(i))}});
     return {{"label", sim.model().label}, {"t", sim.time()}, {"steps", sim.step_count()},
-            {"particle_count", st.size()}, {"particles", particles}};
+            {"particle_count", st.size()}, {"particles", particles},
+            {"collisions_total", sim.collisions_total()}, {"resting_contacts", sim.resting_contacts()},
+            {"asleep_count", sim.asleep_count()}};
 }
 
 // The aim in progress: its velocity and, for checking the mapping, where the particle and the
@@ -187,6 +189,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     static constexpr const char* pending_names[] = {"quit", "open", "revert"};
     j["pending"] = s.pending ? nlohmann::json(pending_names[static_cast<int>(s.pending->kind)]) : nlohmann::json(nullptr);
     j["status"] = s.status_message;
+    j["collision_status"] = ui::collision_status(s);  // the status bar's collision counters
     // Whether a text field had the keyboard on the last frame (tests wait for it before typing).
     j["text_input"] = ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantTextInput;
     const OrbitCamera& c = view.camera;
@@ -199,6 +202,8 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     j["view"] = {{"trails", s.show_trails},
                  {"velocity", s.show_velocity},
                  {"wind", s.show_wind},
+                 {"contacts", s.show_contacts},
+                 {"tint_sleeping", s.tint_sleeping},
                  {"split", s.split_view},
                  {"camera", {{"target", {c.target.x, c.target.y, c.target.z}}, {"yaw", c.yaw}, {"pitch", c.pitch},
                              {"distance", c.distance}}},

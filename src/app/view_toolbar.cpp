@@ -49,6 +49,34 @@ const char* wind_note(const Experiment& e) {
     return "";
 }
 
+bool any_collisions(const Experiment* e) {
+    if (!e) return false;
+    for (const Simulation& run : e->runs())
+        if (run.model().collisions.enabled) return true;
+    return false;
+}
+
+// The pile's two view options: contacts as lines, sleeping particles tinted. Only with collisions.
+void pile_toggles(ui::LabSession& s) {
+    const bool off = !any_collisions(s.experiment.get());
+    auto explain_if_off = [off] {
+        if (off && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("Contacts and sleeping particles need collisions (Scene section)");
+    };
+    ImGui::BeginDisabled(off);
+    toggle_button("Contacts", s.show_contacts,
+                  "Contacts carrying a load, centre to centre (a wall contact: centre to contact point), drawn\n"
+                  "through the balls: faint amber for a light load, white for the heaviest in the view");
+    ui::note_item_rect(s, "view.contacts");
+    explain_if_off();
+    ImGui::SameLine();
+    toggle_button("Sleep", s.tint_sleeping,
+                  "Sleeping particles in slate grey: islands at rest are not stepped until something strikes them");
+    ui::note_item_rect(s, "view.sleep");
+    explain_if_off();
+    ImGui::EndDisabled();
+}
+
 // Which variants fill the split view's panes: a checkbox per variant, at most max_split_panes.
 void pane_chooser(ui::LabSession& s) {
     const std::size_t count = s.experiment->variant_count();
@@ -99,6 +127,8 @@ ViewCommand draw_view_toolbar(ui::LabSession& s, RecordControl& record) {
     std::snprintf(tip, sizeof tip, "Wind field on a grid: each arrow shows the air's travel in %.2g s%s", wind_arrow_time_s(room),
                   s.experiment ? wind_note(*s.experiment) : "");
     toggle_button("Wind", s.show_wind, tip);
+    ImGui::SameLine();
+    pile_toggles(s);
     ImGui::SameLine();
     const bool single = !s.experiment || s.experiment->variant_count() < 2;
     ImGui::BeginDisabled(single);
