@@ -158,7 +158,7 @@ const Case preset_cases[] = {
     {"newtons_cradle.json", 1, 2500, 0xdc5228af5456eca7ull},
     {"newtons_cradle.json", 2, 2500, 0xf8cb045724cd4f5full},
     {"optimal_angle.json", 0, 2500, 0x2cac261951c0305eull},
-    {"pool_break.json", 0, 2500, 0xeef3d5b7ce07c370ull},
+    {"pool_break.json", 0, 2500, 0xba29e357727f7dbdull},
     {"pool_break.json", 1, 2500, 0xc993676b97588b97ull},
     {"poured_balls.json", 0, 50, 0x8fcc1f6c8b62642dull},
     {"restitution.json", 0, 2500, 0xc2830ef3be8674dbull},

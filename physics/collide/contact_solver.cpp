@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 
 namespace pl::collide {
@@ -97,8 +98,26 @@ void ContactSolver::gather(const ParticleState& s, const Model& m, const std::ve
         }
     }
     if (contacts_.size() > pair_contacts) std::sort(contacts_.begin(), contacts_.end(), before);
+    keep_sleeping(asleep);
     std::sort(bodies_.begin(), bodies_.end());
     for (const std::uint32_t i : bodies_) in_body_[i] = 0;
+}
+
+void ContactSolver::keep_sleeping(const std::vector<std::uint8_t>& asleep) {
+    // The contacts of sleeping islands are not looked for (the broad phase leaves their pairs
+    // out): they are kept from the last step as they were, with their impulses, so that a pile
+    // shows its contacts asleep and wakes with its weight already carried. Both lists are in
+    // order: one merge.
+    kept_.clear();
+    for (const SolverContact& c : previous_)
+        if (asleep[c.a] && (c.is_wall() || asleep[c.b])) {
+            kept_.push_back(c);
+            kept_.back().active = false;
+        }
+    if (kept_.empty()) return;
+    merged_.clear();
+    std::merge(contacts_.begin(), contacts_.end(), kept_.begin(), kept_.end(), std::back_inserter(merged_), before);
+    contacts_.swap(merged_);
 }
 
 void ContactSolver::warm_start() {
@@ -167,7 +186,7 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
         for (SolverContact& c : contacts_)
             if (c.active) solve_contact(s, c, spin);
     std::uint64_t loaded = 0;
-    for (const SolverContact& c : contacts_) loaded += c.active && c.lambda_n > 0.0;
+    for (const SolverContact& c : contacts_) loaded += c.lambda_n > 0.0;
     // The impulses acted over the whole step: the end positions move by dv h (semi-implicit Euler,
     // x1 = x0 + v1 h). Their work is the impulse times the mean of the velocities at the start
     // and at the end of the step (and likewise for the spin): with gravity's m g h (v0 + v1) / 2

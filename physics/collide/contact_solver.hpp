@@ -65,18 +65,19 @@ public:
     // Solves them; changes the velocities (and spins) of s, and moves the end positions by the
     // velocity changes times h. Adds the contacts' work on each particle to s.collision_work
     // (from the velocities and spins at the start of the step). Returns the number of contacts
-    // that carry an impulse.
+    // that carry an impulse, sleeping ones included.
     std::uint64_t solve(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
                         const std::vector<Vec3>& start_spin);
 
     const std::vector<SolverContact>& contacts() const { return contacts_; }
 
 private:
+    void keep_sleeping(const std::vector<std::uint8_t>& asleep);
     void warm_start();
     void apply(ParticleState& s, const SolverContact& c, const Vec3& impulse, bool spin) const;
     void solve_contact(ParticleState& s, SolverContact& c, bool spin) const;
 
-    std::vector<SolverContact> contacts_, previous_;
+    std::vector<SolverContact> contacts_, previous_, kept_, merged_;
     std::vector<std::uint32_t> bodies_;   // particles in some contact, increasing
     std::vector<std::uint8_t> in_body_;   // per particle: 1 if listed in bodies_
     std::vector<Vec3> v0_, w0_;           // velocity and spin of each body before the solve

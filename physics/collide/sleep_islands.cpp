@@ -50,6 +50,7 @@ void SleepIslands::update(const ParticleState& s, const std::vector<SolverContac
     // Every contact found has an awake particle (two sleeping ones are not paired): its sleeping
     // partner's island wakes, as does one struck by an impact or kicked by hand.
     for (const SolverContact& c : contacts) {
+        if (!c.active) continue;  // a sleeping island's own contact, kept
         wake_island(c.a);
         if (!c.is_wall()) wake_island(c.b);
     }
@@ -59,7 +60,7 @@ void SleepIslands::update(const ParticleState& s, const std::vector<SolverContac
     }
     members_.clear();
     for (const SolverContact& c : contacts) {
-        if (c.is_wall()) continue;
+        if (c.is_wall() || !c.active) continue;
         for (const std::uint32_t i : {c.a, c.b})
             if (!in_contact_[i]) {
                 in_contact_[i] = 1;
@@ -69,11 +70,16 @@ void SleepIslands::update(const ParticleState& s, const std::vector<SolverContac
         if (ra != rb) parent_[std::max(ra, rb)] = std::min(ra, rb);  // the smaller index is the root: order-free
     }
     // Still time: an awake particle out of every pair contact, or moving, starts again from zero.
+    // A particle resting on a wall and touching no other is an island of its own.
     for (std::uint32_t i = 0; i < s.size(); ++i) {
         if (asleep_[i]) continue;
         if (!in_contact_[i]) {
-            still_[i] = 0.0;
-            continue;
+            if (!s.resting[i] || s.frozen[i]) {
+                still_[i] = 0.0;
+                continue;
+            }
+            in_contact_[i] = 1;
+            members_.push_back(i);
         }
         const double surface = glm::length(s.spin(i)) * s.radius[i];
         const bool still = rest_speed > 0.0 && glm::length(s.velocity(i)) < rest_speed && surface < rest_speed;

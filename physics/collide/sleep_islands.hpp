@@ -1,7 +1,8 @@
 // Sleeping islands: particles at rest in a pile stop being stepped until something touches them.
 //
 // An island is a connected set of particles under the pair contacts of the contact solver (walls
-// do not join islands: they do not move). A particle in some pair contact is still while its
+// do not join islands: they do not move; a particle resting on a wall and touching no other is an
+// island of its own). A particle in some pair contact is still while its
 // speed and its surface speed of spin stay below the contact's rest speed; an island falls asleep
 // when all its particles have been still for time_to_sleep (Box2D's rule and its 0.5 s,
 // b2_timeToSleep). Asleep, a particle keeps the position it had and no velocity, so a pile that
