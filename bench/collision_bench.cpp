@@ -4,6 +4,9 @@
 // pile (balls of 2 cm dropped on a floor sized for about ten layers) while it settles, awake,
 // and once it sleeps.
 #include "physics/collide/broad_phase.hpp"
+#ifdef PL_HAS_BULLET
+#include "peers/bullet_peer.hpp"
+#endif
 #include "physics/model/emitter.hpp"
 #include "physics/stepping/simulation.hpp"
 #include "registry.hpp"
@@ -78,6 +81,26 @@ void run_pairs(benchmark::State& state, std::size_t n, bool grid) {
         benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+#ifdef PL_HAS_BULLET
+// The same gas stepped by Bullet (peers/bullet_peer.hpp): same particles, room, dt, e and mu.
+void run_bullet_gas(benchmark::State& state, std::size_t n) {
+    const Gas g = dilute_gas(n, true);
+    PeerScene scene;
+    scene.room = g.model.room;
+    scene.gravity = g.model.world.gravity;
+    scene.dt = g.model.integrator.dt;
+    scene.restitution = g.model.collisions.restitution;
+    scene.friction = g.model.collisions.friction;
+    scene.particles = g.particles;
+    BulletPeer peer(scene);
+    peer.step(10);
+    for (auto _ : state) peer.step(1);
+    state.counters[rate_counter] =
+        benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["contacts"] = static_cast<double>(peer.contacts());
+}
+#endif
+
 // n balls of 2 cm, 30 g dropped from up to 1.5 m onto a floor that holds about n / 10 of them
 // side by side; e = 0.5, mu = 0.5 for walls and pairs (the test pile of collision_pile_test).
 Gas pile(std::size_t n) {
@@ -117,6 +140,12 @@ void run_pile(benchmark::State& state, std::size_t n, double from) {
 }  // namespace
 
 void register_collision_benchmarks() {
+#ifdef PL_HAS_BULLET
+    for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}})
+        benchmark::RegisterBenchmark(("collisions/peer/bullet/gas/n:" + std::to_string(n)).c_str(),
+                                     [n](benchmark::State& s) { run_bullet_gas(s, n); })
+            ->UseRealTime();
+#endif
     for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}})
         for (const auto& [phase, from] : {std::pair{"settling", 0.7}, std::pair{"asleep", 3.0}})
             benchmark::RegisterBenchmark(("collisions/pile/" + std::string(phase) + "/n:" + std::to_string(n)).c_str(),
