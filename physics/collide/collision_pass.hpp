@@ -1,16 +1,20 @@
 // The collision pass a Simulation with collisions enabled runs after each step of its particles
-// (walls already handled): it finds the pairs that met during the step, resolves each at its time
-// of impact, and pushes apart pairs left overlapping.
+// (walls already handled): it puts sleeping particles back where they slept, finds the pairs that
+// met during the step and resolves the impacts at their time of impact, hands the slow, lasting
+// contacts (and the walls under them) to the contact solver (contact_solver.hpp), pushes apart
+// pairs left overlapping, and lets still islands fall asleep (sleep_islands.hpp).
 //
-// Each particle's path over the step is taken as linear from where it started to where the step
-// put it. Passes repeat until no pair closes (Guendelman, Bridson & Fedkiw, "Nonconvex rigid
-// bodies with stacking", SIGGRAPH 2003: sequential impulses, pass after pass): a pass gathers the
-// first contact of every candidate pair, sorts them by (time, a, b) and resolves them in that
-// order, each particle at most once per pass (its path changed, so its later contacts are found
-// again by the next pass). A resolved pair meets at its time of impact, takes its impulse there and
-// moves on with its new velocity for the rest of the step, so a fast pair cannot pass through each
-// other whatever the step. The order is fixed and the pass runs on one thread: the result is the
-// same bits on any number of threads.
+// Impacts: each particle's path over the step is taken as linear from where it started to where
+// the step put it. Passes repeat until no pair closes (Guendelman, Bridson & Fedkiw, "Nonconvex
+// rigid bodies with stacking", SIGGRAPH 2003: sequential impulses, pass after pass): a pass
+// gathers the first contact of every candidate pair, sorts them by (time, a, b) and resolves them
+// in that order, each particle at most once per pass (its path changed, so its later contacts are
+// found again by the next pass). A resolved pair meets at its time of impact, takes its impulse
+// there and moves on with its new velocity for the rest of the step, so a fast pair cannot pass
+// through each other whatever the step. Searches run threaded, but every order is fixed and the
+// impulses are applied on one thread: the result is the same bits on any number of threads.
+// Everything the pass changes (velocities, spins, positions) is booked in each particle's
+// collision work, so the energy ledger's residual is the stepping method's own error.
 #pragma once
 
 #include "physics/collide/broad_phase.hpp"
