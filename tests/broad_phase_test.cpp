@@ -94,10 +94,56 @@ TEST(BroadPhase, PairsOfTwoSleepingParticlesAreLeftOut) {
     all_pairs(boxes, slow);
     for (const Pair& p : slow)
         if (!(asleep[p.a] && asleep[p.b])) expected.push_back(p);
-    EXPECT_EQ(grid.big_count(), 3u);
+    EXPECT_LT(grid.cell_size(), 0.05);  // the grid stays fine for the small ones
     EXPECT_EQ(fast, expected);
     EXPECT_GT(expected.size(), 500u);
     EXPECT_LT(expected.size(), slow.size());
+}
+
+TEST(BroadPhase, SameOnTwoThreadsAndAsTheCellAdapts) {
+    // A dilute set (the cell grows over the calls, towards a few entries per cell) and a dense
+    // one (it shrinks): every call, on one thread or two, gives the all-pairs loop's pairs.
+    for (const double side : {4.0, 0.5}) {
+        const SweptBoxes boxes = random_boxes(20000, side, 0.005, 0.005, 0.002, 6);
+        std::vector<Pair> slow, one, two;
+        all_pairs(boxes, slow);
+        BroadPhase serial, threaded;
+        std::vector<double> cells;
+        for (int call = 0; call < 6; ++call) {
+            serial.find_pairs(boxes, one, nullptr, 1);
+            threaded.find_pairs(boxes, two, nullptr, 2);
+            EXPECT_EQ(one, slow) << "side " << side << " call " << call;
+            EXPECT_EQ(two, slow) << "side " << side << " call " << call;
+            EXPECT_EQ(serial.cell_size(), threaded.cell_size());
+            cells.push_back(serial.cell_size());
+        }
+        if (side > 1.0) EXPECT_GT(cells.back(), 2.0 * cells.front()) << "a dilute gas gets coarser cells";
+        else EXPECT_LE(cells.back(), cells.front()) << "a dense crowd keeps fine cells";
+        EXPECT_LT(serial.entry_count(), 8 * boxes.ids.size());
+    }
+}
+
+TEST(BroadPhase, VastRoomAndSharedCorners) {
+    // Balls of 1 mm over a kilometre: 1e18 cells of the median box; the cells grow until their
+    // index fits, and the pairs are still exact. Then boxes that touch exactly at their corners
+    // and faces (on cell boundaries): each pair once.
+    SweptBoxes vast = random_boxes(2000, 1000.0, 0.001, 0.001, 0.0, 7);
+    for (int k = 0; k < 3; ++k) {  // one close pair among them
+        vast.lo[k][1] = vast.lo[k][0] + 0.0015;
+        vast.hi[k][1] = vast.hi[k][0] + 0.0015;
+    }
+    expect_same_pairs(vast, 1);
+    SweptBoxes lattice;
+    lattice.resize(512);
+    for (std::uint32_t i = 0; i < 512; ++i) {
+        const double c[3] = {0.1 * (i % 8), 0.1 * (i / 8 % 8), 0.1 * (i / 64)};
+        for (int k = 0; k < 3; ++k) {
+            lattice.lo[k][i] = c[k] - 0.05;
+            lattice.hi[k][i] = c[k] + 0.05;
+        }
+        lattice.ids.push_back(i);
+    }
+    expect_same_pairs(lattice, 3 * 7 * 64);
 }
 
 }  // namespace

@@ -3,11 +3,22 @@
 #include "physics/stepping/thread_pool.hpp"
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cmath>
 
 namespace pl::collide {
+namespace {
+
+constexpr double most_cells_per_axis = 2097151.0;  // 2^21 - 1: the linear index fits 63 bits
+constexpr int radix_bits = 11;                      // a 2048-bin histogram stays in the L1 cache
+constexpr int largest_scale = 4;                    // the cell is at most 16 median boxes
+
+// x in float, rounded down (below) or up (above), without a branch: moved by more than the
+// conversion's half-ulp error (|x| 2^-24) before rounding to nearest; 1e-30 covers x = 0.
+float below(double x) { return static_cast<float>(x - (std::abs(x) * 0x1p-22 + 1e-30)); }
+float above(double x) { return static_cast<float>(x + (std::abs(x) * 0x1p-22 + 1e-30)); }
+
+}  // namespace
 
 void SweptBoxes::resize(std::size_t n) {
     for (int k = 0; k < 3; ++k) {
@@ -20,130 +31,270 @@ double SweptBoxes::extent(std::uint32_t i) const {
     return std::max({hi[0][i] - lo[0][i], hi[1][i] - lo[1][i], hi[2][i] - lo[2][i]});
 }
 
-std::size_t BroadPhase::bucket_of(std::int64_t ix, std::int64_t iy, std::int64_t iz) const {
-    // Teschner et al. 2003 ("Optimized spatial hashing for collision detection of deformable
-    // objects"): three large primes and xor; then SplitMix64's finaliser, since the table size is
-    // a power of two and the low bits of the plain products repeat over neighbouring cells.
-    std::uint64_t h = static_cast<std::uint64_t>(ix) * 73856093u ^ static_cast<std::uint64_t>(iy) * 19349663u ^
-                      static_cast<std::uint64_t>(iz) * 83492791u;
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-    h ^= h >> 31;
-    return static_cast<std::size_t>(h & (bucket_start_.size() - 2));
+template <class Task>
+void BroadPhase::run(std::size_t tasks, Task&& task) {
+    if (tasks == 1) return task(std::size_t{0});
+    ThreadPool::shared().run(tasks, threads_, task);
 }
 
-BroadPhase::Cell BroadPhase::cell_of(const SweptBoxes& boxes, std::uint32_t i) const {
-    const double inv = 1.0 / cell_;
-    Cell c;
-    for (int k = 0; k < 3; ++k) c[k] = static_cast<std::int64_t>(std::floor(0.5 * (boxes.lo[k][i] + boxes.hi[k][i]) * inv));
-    return c;
+std::uint64_t BroadPhase::coordinate(double x, int axis) const {
+    // x >= the origin: truncation is the floor (through a signed conversion: one instruction; the
+    // value is below 2^21). One expression for every box and corner, so a corner shared by two
+    // boxes lands in the same cell for both.
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>((x - origin_[axis]) * inverse_cell_));
 }
 
-void BroadPhase::build_grid(const SweptBoxes& boxes) {
-    const std::size_t m = boxes.ids.size();
-    extents_.resize(m);
-    for (std::size_t k = 0; k < m; ++k) extents_[k] = boxes.extent(boxes.ids[k]);
-    // The cell: the largest box, so that a box meets only the 27 cells around its own (a dense
-    // pile of equal balls then finds about 30 candidates per ball, not the 250 of a cell twice
-    // as large); but no more than twice the median box, so that a few big or fast balls among
-    // many small ones go to the list tested against all instead of coarsening the grid.
-    const double largest = *std::max_element(extents_.begin(), extents_.end());
-    std::nth_element(extents_.begin(), extents_.begin() + static_cast<std::ptrdiff_t>(m / 2), extents_.end());
-    cell_ = std::min(largest, 2.0 * extents_[m / 2]);  // > 0: every box holds a sphere of positive radius
-    small_.clear();
-    big_.clear();
-    for (const std::uint32_t i : boxes.ids) (boxes.extent(i) <= cell_ ? small_ : big_).push_back(i);
-    // Buckets: a power of two >= 2 m (few cells share one), plus the end marker.
-    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * small_.size(), 16));
-    bucket_start_.assign(buckets + 1, 0);
-    if (bucket_.size() < boxes.lo[0].size()) bucket_.resize(boxes.lo[0].size());
-    if (cell_of_.size() < boxes.lo[0].size()) cell_of_.resize(boxes.lo[0].size());
-    for (const std::uint32_t i : small_) {
-        cell_of_[i] = cell_of(boxes, i);
-        bucket_[i] = static_cast<std::uint32_t>(bucket_of(cell_of_[i][0], cell_of_[i][1], cell_of_[i][2]));
-        ++bucket_start_[bucket_[i] + 1];
-    }
-    for (std::size_t b = 1; b <= buckets; ++b) bucket_start_[b] += bucket_start_[b - 1];
-    sorted_.resize(small_.size());
-    // Counting sort: each particle goes to the next free slot of its bucket (stable: ids order).
-    next_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
-    for (const std::uint32_t i : small_) sorted_[next_[bucket_[i]]++] = i;
-    slot_cell_.resize(sorted_.size());
-    for (int k = 0; k < 3; ++k) {
-        slot_lo_[k].resize(sorted_.size());
-        slot_hi_[k].resize(sorted_.size());
-    }
-    for (std::size_t slot = 0; slot < sorted_.size(); ++slot) {
-        const std::uint32_t i = sorted_[slot];
-        slot_cell_[slot] = cell_of_[i];
+void BroadPhase::choose_cell(const SweptBoxes& boxes, std::size_t tasks) {
+    // The median box (from an evenly strided sample of at most 1024 boxes: the same on every run)
+    // and the region all boxes take.
+    const std::size_t m = boxes.ids.size(), stride = std::max<std::size_t>(1, m / 1024);
+    sample_.clear();
+    for (std::size_t k = 0; k < m; k += stride) sample_.push_back(boxes.extent(boxes.ids[k]));
+    std::nth_element(sample_.begin(), sample_.begin() + static_cast<std::ptrdiff_t>(sample_.size() / 2), sample_.end());
+    run(tasks, [&](std::size_t t) {
+        Part& part = parts_[t];
         for (int k = 0; k < 3; ++k) {
-            slot_lo_[k][slot] = boxes.lo[k][i];
-            slot_hi_[k][slot] = boxes.hi[k][i];
+            const double *lo = boxes.lo[k].data(), *hi = boxes.hi[k].data();
+            double low = lo[boxes.ids[0]], top = hi[boxes.ids[0]];  // locals: kept in registers
+            for (std::size_t n = m * t / tasks; n < m * (t + 1) / tasks; ++n) {
+                low = std::min(low, lo[boxes.ids[n]]);
+                top = std::max(top, hi[boxes.ids[n]]);
+            }
+            part.low[k] = low;
+            part.high[k] = top;
+        }
+    });
+    double high[3];
+    for (int k = 0; k < 3; ++k) {
+        origin_[k] = parts_[0].low[k];
+        high[k] = parts_[0].high[k];
+        for (std::size_t t = 1; t < tasks; ++t) {
+            origin_[k] = std::min(origin_[k], parts_[t].low[k]);
+            high[k] = std::max(high[k], parts_[t].high[k]);
         }
     }
+    cell_ = std::ldexp(sample_[sample_.size() / 2], scale_);  // > 0: every box holds a sphere
+    size_grid(high);
 }
 
-void BroadPhase::scan_slots(std::size_t begin, std::size_t end, const std::uint8_t* asleep,
-                            std::vector<Pair>& pairs) const {
-    auto sleeps = [asleep](std::uint32_t i) { return asleep && asleep[i]; };
-    // Slot by slot, so that consecutive particles share their neighbour buckets in cache. An awake
-    // particle takes the pairs with higher awake ids and with every sleeping one (which does not
-    // scan), so each pair is met once.
-    for (std::size_t a = begin; a < end; ++a) {
-        // A box no larger than a cell overlaps only boxes whose centres lie in the 27 cells around
-        // its own centre's cell. Cells sharing a bucket are told apart by their coordinates, so
-        // each neighbour is met once even when a bucket is scanned for two cells.
-        const std::uint32_t i = sorted_[a];
-        if (sleeps(i)) continue;
-        const Cell c = slot_cell_[a];
-        for (std::int64_t dx = -1; dx <= 1; ++dx)
-            for (std::int64_t dy = -1; dy <= 1; ++dy)
-                for (std::int64_t dz = -1; dz <= 1; ++dz) {
-                    const Cell n{c[0] + dx, c[1] + dy, c[2] + dz};
-                    const std::size_t b = bucket_of(n[0], n[1], n[2]);
-                    for (std::uint32_t k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k) {
-                        const Cell& cj = slot_cell_[k];
-                        const std::uint32_t j = sorted_[k];
-                        if ((j > i || (j != i && sleeps(j))) && cj[0] == n[0] && cj[1] == n[1] && cj[2] == n[2] &&
-                            slot_lo_[0][a] <= slot_hi_[0][k] && slot_lo_[0][k] <= slot_hi_[0][a] &&
-                            slot_lo_[1][a] <= slot_hi_[1][k] && slot_lo_[1][k] <= slot_hi_[1][a] &&
-                            slot_lo_[2][a] <= slot_hi_[2][k] && slot_lo_[2][k] <= slot_hi_[2][a])
-                            pairs.push_back({std::min(i, j), std::max(i, j)});
+void BroadPhase::size_grid(const double (&high)[3]) {
+    // The linear index of every cell must fit 32 bits (and each coordinate 21): in a vast, nearly
+    // empty room the cells grow until it does, which costs nothing there.
+    for (;;) {
+        inverse_cell_ = 1.0 / cell_;
+        std::uint64_t cells[3];
+        bool fits = true;
+        for (int k = 0; k < 3; ++k) {
+            const double span = (high[k] - origin_[k]) * inverse_cell_;
+            fits = fits && span < most_cells_per_axis;
+            cells[k] = fits ? coordinate(high[k], k) + 1 : 0;
+        }
+        if (fits && cells[0] * cells[1] * cells[2] <= 0xffffffffull) {
+            stride_y_ = cells[0];
+            stride_z_ = cells[0] * cells[1];
+            cell_count_ = stride_z_ * cells[2];
+            const int bits = std::max(1, static_cast<int>(std::bit_width(cell_count_ - 1)));
+            passes_ = (bits + radix_bits - 1) / radix_bits;
+            digit_ = (bits + passes_ - 1) / passes_;
+            return;
+        }
+        cell_ *= 2.0;
+    }
+}
+
+void BroadPhase::enter_boxes(const SweptBoxes& boxes, std::size_t begin, std::size_t end, Part& part) {
+    part.entries.clear();
+    part.big.clear();
+    const std::uint32_t digit_mask = (1u << digit_) - 1;  // the radix sort's first digit, counted here
+    part.count.assign(std::size_t{digit_mask} + 1, 0);
+    std::uint32_t* count = part.count.data();
+    for (std::size_t n = begin; n < end; ++n) {
+        const std::uint32_t i = boxes.ids[n];
+        std::uint64_t lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = coordinate(boxes.lo[k][i], k);
+            hi[k] = coordinate(boxes.hi[k][i], k);
+        }
+        if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > max_cells) {
+            part.big.push_back(i);
+            continue;
+        }
+        float lo_f[3], hi_f[3];
+        for (int k = 0; k < 3; ++k) {
+            box_[i].lo[k] = boxes.lo[k][i];
+            box_[i].hi[k] = boxes.hi[k][i];
+            lo_f[k] = below(boxes.lo[k][i]);
+            hi_f[k] = above(boxes.hi[k][i]);
+        }
+        for (std::uint64_t z = lo[2]; z <= hi[2]; ++z)
+            for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
+                for (std::uint64_t x = lo[0]; x <= hi[0]; ++x) {
+                    // Field by field: a whole-struct copy from the stack stalls on store forwarding.
+                    Entry& e = part.entries.emplace_back();
+                    e.cell = static_cast<std::uint32_t>(linear(x, y, z));
+                    ++count[e.cell & digit_mask];
+                    e.id = i;
+                    for (int k = 0; k < 3; ++k) {
+                        e.lo[k] = lo_f[k];
+                        e.hi[k] = hi_f[k];
                     }
                 }
     }
+}
+
+void BroadPhase::radix_pass(const std::vector<Source>& sources, Entry* out, int shift, std::uint32_t mask,
+                            bool counted) {
+    // One stable counting-sort pass on the digit (cell >> shift) & mask, a histogram per source;
+    // the sources are in order, so the destinations of digit d are source 0's, then source 1's...
+    const std::size_t tasks = sources.size();
+    if (!counted) {
+        run(tasks, [&](std::size_t t) {
+            std::vector<std::uint32_t>& count = parts_[t].count;
+            count.assign(std::size_t{mask} + 1, 0);
+            for (const Entry* e = sources[t].begin; e != sources[t].end; ++e) ++count[(e->cell >> shift) & mask];
+        });
+    }
+    std::uint32_t next = 0;
+    for (std::size_t d = 0; d <= mask; ++d)
+        for (std::size_t t = 0; t < tasks; ++t) {
+            const std::uint32_t c = parts_[t].count[d];
+            parts_[t].count[d] = next;
+            next += c;
+        }
+    run(tasks, [&](std::size_t t) {
+        std::uint32_t* place = parts_[t].count.data();
+        for (const Entry* e = sources[t].begin; e != sources[t].end; ++e) out[place[(e->cell >> shift) & mask]++] = *e;
+    });
+}
+
+void BroadPhase::radix_sort(std::size_t tasks) {
+    // LSD radix sort of the entries by cell, in equal digits of at most 11 bits: stable, so that a
+    // cell's entries keep the order of their ids. The first pass reads the parts where they were
+    // made; the later ones equal slices of the last pass's output.
+    std::size_t total = 0;
+    std::vector<Source>& sources = sources_;
+    sources.resize(tasks);
+    for (std::size_t t = 0; t < tasks; ++t) {
+        sources[t] = {parts_[t].entries.data(), parts_[t].entries.data() + parts_[t].entries.size()};
+        total += parts_[t].entries.size();
+    }
+    if (entries_.size() < total) {  // grown, never cleared: no step pays for zeroing them
+        entries_.resize(total);
+        spare_.resize(total);
+    }
+    entry_count_ = total;
+    const std::uint32_t mask = (1u << digit_) - 1;
+    for (int pass = 0; pass < passes_; ++pass) {
+        // Every pass writes the other buffer; the last one writes entries_. The first pass's
+        // histograms were counted as the entries were made.
+        Entry* out = (passes_ - pass) % 2 == 1 ? entries_.data() : spare_.data();
+        radix_pass(sources, out, pass * digit_, mask, pass == 0);
+        for (std::size_t t = 0; t < tasks; ++t) sources[t] = {out + total * t / tasks, out + total * (t + 1) / tasks};
+    }
+}
+
+std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, const std::uint8_t* asleep,
+                                   std::vector<Pair>& pairs) const {
+    // Two entries of a cell pair when one of them is awake, their boxes overlap and this cell
+    // holds the low corner of the boxes' intersection (the one cell of the several they may share
+    // that reports them). Returns the number of cells.
+    auto sleeps = [asleep](std::uint32_t i) { return asleep && asleep[i]; };
+    std::size_t cells = 0;
+    for (std::size_t run = begin; run < end; ++cells) {
+        const std::uint64_t cell = entries_[run].cell;
+        std::size_t run_end = run + 1;
+        while (run_end < end && entries_[run_end].cell == cell) ++run_end;
+        for (std::size_t p = run; p + 1 < run_end; ++p) {
+            const Entry& ep = entries_[p];
+            for (std::size_t q = p + 1; q < run_end; ++q) {
+                const Entry& eq = entries_[q];
+                if (ep.lo[0] > eq.hi[0] || eq.lo[0] > ep.hi[0] || ep.lo[1] > eq.hi[1] || eq.lo[1] > ep.hi[1] ||
+                    ep.lo[2] > eq.hi[2] || eq.lo[2] > ep.hi[2])
+                    continue;  // apart even in the rounded-out boxes
+                const std::uint32_t i = ep.id, j = eq.id;
+                const Box &a = box_[i], &b = box_[j];
+                if (a.lo[0] > b.hi[0] || b.lo[0] > a.hi[0] || a.lo[1] > b.hi[1] || b.lo[1] > a.hi[1] ||
+                    a.lo[2] > b.hi[2] || b.lo[2] > a.hi[2] || (sleeps(i) && sleeps(j)))
+                    continue;
+                const std::uint64_t home = linear(coordinate(std::max(a.lo[0], b.lo[0]), 0),
+                                                  coordinate(std::max(a.lo[1], b.lo[1]), 1),
+                                                  coordinate(std::max(a.lo[2], b.lo[2]), 2));
+                if (home == cell) pairs.push_back({std::min(i, j), std::max(i, j)});
+            }
+        }
+        run = run_end;
+    }
+    return cells;
+}
+
+void BroadPhase::pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const {
+    // Big particles against all: a pair of two big ones is taken from the side of the lower
+    // awake id (or the awake one).
+    auto sleeps = [asleep](std::uint32_t i) { return asleep && asleep[i]; };
+    for (const std::uint32_t big : big_)
+        for (const std::uint32_t j : boxes.ids) {
+            if (j == big || (sleeps(big) && sleeps(j)) || !boxes.overlap(big, j)) continue;
+            const bool other_big = std::binary_search(big_.begin(), big_.end(), j);
+            if (other_big && (sleeps(big) || (!sleeps(j) && j < big))) continue;
+            pairs.push_back({std::min(big, j), std::max(big, j)});
+        }
+}
+
+void BroadPhase::adapt_cell(std::size_t cells) {
+    // Aim at a few entries per cell: fewer, and the entries (a sort's work) outnumber the
+    // particles for nothing; many more, and the pairs tested in a cell grow as their square.
+    // Doubling the cell multiplies a uniform crowd's entries per cell by up to 8, hence the wide
+    // band (no flip-flop between two sizes).
+    if (cells == 0) return;
+    const double per_cell = static_cast<double>(entry_count_) / static_cast<double>(cells);
+    if (per_cell < 1.5 && scale_ < largest_scale) ++scale_;
+    else if (per_cell > 16.0 && scale_ > 0) --scale_;
+}
+
+std::size_t BroadPhase::scan(const std::uint8_t* asleep, std::vector<Pair>& pairs, std::size_t threads) {
+    // Below a few thousand entries a thread costs more to wake than its share saves.
+    const std::size_t slices = threads > 1 && entry_count_ >= 4096 ? 4 * threads : 1;
+    if (slices == 1) return scan_cells(0, entry_count_, asleep, pairs);
+    // Slices of about equal size, each starting at a cell's first entry.
+    slice_start_.assign(slices + 1, entry_count_);
+    for (std::size_t k = 0; k < slices; ++k) {
+        std::size_t at = entry_count_ * k / slices;
+        while (at > 0 && at < entry_count_ && entries_[at].cell == entries_[at - 1].cell) ++at;
+        slice_start_[k] = at;
+    }
+    slice_pairs_.resize(slices);
+    slice_cells_.assign(slices, 0);
+    run(slices, [&](std::size_t k) {
+        slice_pairs_[k].clear();
+        slice_cells_[k] = scan_cells(slice_start_[k], std::max(slice_start_[k], slice_start_[k + 1]), asleep, slice_pairs_[k]);
+    });
+    std::size_t cells = 0;
+    for (std::size_t k = 0; k < slices; ++k) {
+        pairs.insert(pairs.end(), slice_pairs_[k].begin(), slice_pairs_[k].end());
+        cells += slice_cells_[k];
+    }
+    return cells;
 }
 
 void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
                             std::size_t threads) {
     pairs.clear();
     big_.clear();
-    if (boxes.ids.size() < 2) return;
-    build_grid(boxes);
-    auto sleeps = [asleep](std::uint32_t i) { return asleep && asleep[i]; };
-    // Below a few thousand particles a thread costs more to wake than its share saves.
-    const std::size_t slices = threads > 1 && sorted_.size() >= 4096 ? 4 * threads : 1;
-    if (slices == 1) {
-        scan_slots(0, sorted_.size(), asleep, pairs);
-    } else {
-        slice_pairs_.resize(slices);
-        auto task = [&](std::size_t k) {
-            slice_pairs_[k].clear();
-            scan_slots(sorted_.size() * k / slices, sorted_.size() * (k + 1) / slices, asleep, slice_pairs_[k]);
-        };
-        ThreadPool::shared().run(slices, threads, task);
-        for (const std::vector<Pair>& slice : slice_pairs_) pairs.insert(pairs.end(), slice.begin(), slice.end());
-    }
-    // Big particles against all: a pair of two big ones is taken from the side that would take it
-    // in the grid (the lower awake id, or the awake one).
-    for (const std::uint32_t big : big_)
-        for (const std::uint32_t j : boxes.ids) {
-            if (j == big || (sleeps(big) && sleeps(j)) || !boxes.overlap(big, j)) continue;
-            const bool other_big = boxes.extent(j) > cell_;
-            if (other_big && (sleeps(big) || (!sleeps(j) && j < big))) continue;
-            pairs.push_back({std::min(big, j), std::max(big, j)});
-        }
+    entry_count_ = 0;
+    const std::size_t m = boxes.ids.size();
+    if (m < 2) return;
+    threads_ = threads;
+    const std::size_t tasks = threads > 1 && m >= 8192 ? threads : 1;
+    if (parts_.size() < tasks) parts_.resize(tasks);
+    if (box_.size() < boxes.lo[0].size()) box_.resize(boxes.lo[0].size());
+    choose_cell(boxes, tasks);
+    run(tasks, [&](std::size_t t) { enter_boxes(boxes, m * t / tasks, m * (t + 1) / tasks, parts_[t]); });
+    for (std::size_t t = 0; t < tasks; ++t) big_.insert(big_.end(), parts_[t].big.begin(), parts_[t].big.end());
+    radix_sort(tasks);
+    const std::size_t cells = scan(asleep, pairs, threads);
+    pair_big_ones(boxes, asleep, pairs);
     std::sort(pairs.begin(), pairs.end());
+    adapt_cell(cells);
 }
 
 void all_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {

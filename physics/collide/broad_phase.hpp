@@ -1,15 +1,26 @@
 // Broad phase of particle-particle collisions: every pair of particles whose swept boxes (the
 // axis-aligned box around the sphere over one step, from its start to its end position) overlap.
-// A hashed uniform grid in structure-of-arrays form, rebuilt each step by a counting sort of the
-// particles by cell, finds them in linear time; the cell is the largest box, at most twice the
-// median box. Particles whose box is larger than a cell (a few big or fast balls among many small
-// ones) stay out of the grid and are tested against every other particle, so they do not make
-// the cells coarse.
-// The same design as the uniform grids of Box2D v3's broad phase predecessors and of GPU particle
-// codes (Green, "Particle Simulation using CUDA", 2010: hash, sort by cell, scan neighbours).
+//
+// A uniform grid, rebuilt each step: each box is entered in every cell it overlaps, the entries
+// are radix-sorted by the cells' linear index (x + X y + X Y z), and a pair is tested only among
+// the entries of one cell, and reported only by the cell that holds the low corner of the two
+// boxes' intersection, so it is met once (Ericson, "Real-Time Collision Detection", 2005,
+// sec. 7.1-7.2; Le Grand, "Broad-Phase Collision Detection with CUDA", GPU Gems 3, ch. 32, 2007:
+// cell entries, a sort, and the "home cell" rule). Nothing is looked up around a particle and
+// every pass streams through memory: the cost is a few sequential passes per particle, with no
+// hash-table misses, at any n.
+//
+// The cell is a power of two times the median box, chosen from the last call's mean entries per
+// cell: a dilute gas gets cells several boxes wide (about one entry per particle and per cell), a
+// dense pile cells of one box (eight entries per particle, about nine per cell). A few big or fast
+// balls among many small ones do not make the grid coarse: they span more cells, and those
+// spanning more than `max_cells` are tested against every other particle.
+//
+// Every stage runs on the threads it is given (the boxes in slices of particles, the radix sort
+// with a histogram per slice, the scan in slices of cells), and every order is fixed: the same
+// pairs, in the same order, on any number of threads.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -39,38 +50,74 @@ struct SweptBoxes {
 
 class BroadPhase {
 public:
+    static constexpr std::size_t max_cells = 512;  // cells a box may span before it is "big"
+
     // Replaces `pairs` by every overlapping pair of `boxes.ids`, sorted. Keeps its buffers from
     // call to call: after the first steps it allocates nothing. With `asleep` (1 per particle
-    // index for a sleeping one), pairs of two sleeping particles are left out: only the awake
-    // particles scan their neighbours, so a pile asleep costs the grid's build and no more.
-    // `threads` > 1 scans the grid in that many threads' share of slices (the pairs are sorted
-    // at the end, so the result is the same on any number).
+    // index for a sleeping one), pairs of two sleeping particles are left out. `threads` > 1
+    // scans the cells in that many threads' share of slices (the pairs are sorted at the end, so
+    // the result is the same on any number of threads; the cell size depends only on the calls
+    // before, never on the threads).
     void find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep = nullptr,
                     std::size_t threads = 1);
 
-    double cell_size() const { return cell_; }           // of the last call
-    std::size_t big_count() const { return big_.size(); }  // particles tested against all, last call
+    double cell_size() const { return cell_; }             // of the last call
+    std::size_t big_count() const { return big_.size(); }    // particles tested against all, last call
+    std::size_t entry_count() const { return entry_count_; }  // cell entries, last call
 
 private:
-    using Cell = std::array<std::int64_t, 3>;
-    Cell cell_of(const SweptBoxes& boxes, std::uint32_t i) const;  // of the box's centre
-    void build_grid(const SweptBoxes& boxes);
-    void scan_slots(std::size_t begin, std::size_t end, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
-    std::size_t bucket_of(std::int64_t ix, std::int64_t iy, std::int64_t iz) const;
+    struct Box {
+        double lo[3], hi[3];
+    };
+    // A box entered in a cell, with the box in floats rounded outwards: a cell's entries are
+    // tested from consecutive memory, and only the pairs that pass read their exact boxes.
+    // 32 bytes: the sort moves little.
+    struct Entry {
+        std::uint32_t cell;  // linear cell index
+        std::uint32_t id;
+        float lo[3], hi[3];
+    };
+    // One thread's share of the particles: the entries it made and the big ones it found.
+    struct Part {
+        std::vector<Entry> entries;
+        std::vector<std::uint32_t> big;
+        std::vector<std::uint32_t> count;  // radix sort histogram of its source
+        double low[3], high[3];
+    };
+    struct Source {
+        const Entry* begin;
+        const Entry* end;
+    };
+    void choose_cell(const SweptBoxes& boxes, std::size_t tasks);
+    void size_grid(const double (&high)[3]);
+    std::uint64_t coordinate(double x, int axis) const;
+    std::uint64_t linear(std::uint64_t x, std::uint64_t y, std::uint64_t z) const { return x + stride_y_ * y + stride_z_ * z; }
+    void enter_boxes(const SweptBoxes& boxes, std::size_t begin, std::size_t end, Part& part);
+    void radix_sort(std::size_t tasks);
+    void radix_pass(const std::vector<Source>& sources, Entry* out, int shift, std::uint32_t mask, bool counted);
+    std::size_t scan_cells(std::size_t begin, std::size_t end, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
+    std::size_t scan(const std::uint8_t* asleep, std::vector<Pair>& pairs, std::size_t threads);
+    void pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
+    void adapt_cell(std::size_t cells);
+    template <class Task>
+    void run(std::size_t tasks, Task&& task);
 
-    double cell_ = 0.0;
-    std::vector<double> extents_;
-    std::vector<std::uint32_t> small_, big_;
-    std::vector<Cell> cell_of_;                // per particle index: its grid cell (small ones)
-    std::vector<std::uint32_t> bucket_;        // per particle index: its grid bucket (small ones)
-    std::vector<std::uint32_t> bucket_start_;  // counting sort: first slot of each bucket, then the end
-    std::vector<std::uint32_t> next_;          // counting sort: next free slot of each bucket
-    std::vector<std::uint32_t> sorted_;        // small particles ordered by bucket
-    // Per slot of sorted_: the particle's cell and box, so that a bucket's particles are read from
-    // consecutive memory and neighbouring particles are scanned one after the other.
-    std::vector<Cell> slot_cell_;
-    std::vector<double> slot_lo_[3], slot_hi_[3];
-    std::vector<std::vector<Pair>> slice_pairs_;  // per slice of slots, when threaded
+    int scale_ = 1;  // the cell is 2^scale_ times the median box
+    std::size_t threads_ = 1;
+    double cell_ = 0.0, inverse_cell_ = 0.0;
+    double origin_[3] = {0.0, 0.0, 0.0};  // the low corner of all boxes
+    std::uint64_t stride_y_ = 1, stride_z_ = 1, cell_count_ = 1;
+    int passes_ = 1, digit_ = 1;  // of the radix sort: digits of digit_ bits
+    std::size_t entry_count_ = 0;
+    std::vector<double> sample_;
+    std::vector<std::uint32_t> big_;
+    std::vector<Box> box_;                  // per particle index
+    std::vector<Part> parts_;               // per task of the build
+    std::vector<Source> sources_;           // of the radix sort's pass
+    std::vector<Entry> entries_, spare_;    // sorted by cell
+    std::vector<std::size_t> slice_start_;  // slice boundaries (at cell boundaries), when threaded
+    std::vector<std::size_t> slice_cells_;
+    std::vector<std::vector<Pair>> slice_pairs_;  // per slice, when threaded
 };
 
 // The reference: every pair tested, O(n^2).

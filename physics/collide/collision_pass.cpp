@@ -8,9 +8,18 @@
 #include <algorithm>
 #include <tuple>
 
-
 namespace pl::collide {
 namespace {
+
+// Runs body(begin, end) over [0, n) in contiguous ranges on up to `threads` threads (each range
+// writes only its own particles, so the result does not depend on the threads).
+template <class Body>
+void for_ranges(std::size_t n, std::size_t threads, Body&& body) {
+    const std::size_t tasks = threads > 1 && n >= 8192 ? threads : 1;
+    if (tasks == 1) return body(std::size_t{0}, n);
+    auto task = [&](std::size_t k) { body(n * k / tasks, n * (k + 1) / tasks); };
+    ThreadPool::shared().run(tasks, threads, task);
+}
 
 Body body_of(const ParticleState& s, std::uint32_t i) {
     return {s.velocity(i), s.spin(i), s.mass[i], s.radius[i], s.inertia[i]};
@@ -35,26 +44,30 @@ CollisionPass::CollisionPass(std::size_t particles)
     boxes_.resize(particles);
 }
 
-void CollisionPass::begin_step(const ParticleState& s) {
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        start_[i] = s.position(i);
-        start_velocity_[i] = s.velocity(i);
-        start_spin_[i] = s.spin(i);
-    }
+void CollisionPass::begin_step(const ParticleState& s, std::size_t threads) {
+    for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            start_[i] = s.position(i);
+            start_velocity_[i] = s.velocity(i);
+            start_spin_[i] = s.spin(i);
+        }
+    });
 }
 
-void CollisionPass::build_boxes(const ParticleState& s) {
-    boxes_.ids.clear();
-    for (std::uint32_t i = 0; i < s.size(); ++i) {
-        if (s.frozen[i]) continue;
-        const Vec3 end = s.position(i);
-        const double r = s.radius[i];
-        for (int k = 0; k < 3; ++k) {
-            boxes_.lo[k][i] = std::min(start_[i][k], end[k]) - r;
-            boxes_.hi[k][i] = std::max(start_[i][k], end[k]) + r;
+void CollisionPass::build_boxes(const ParticleState& s, std::size_t threads) {
+    for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const Vec3 stop = s.position(i);
+            const double r = s.radius[i];
+            for (int k = 0; k < 3; ++k) {
+                boxes_.lo[k][i] = std::min(start_[i][k], stop[k]) - r;
+                boxes_.hi[k][i] = std::max(start_[i][k], stop[k]) + r;
+            }
         }
-        boxes_.ids.push_back(i);
-    }
+    });
+    boxes_.ids.clear();
+    for (std::uint32_t i = 0; i < s.size(); ++i)
+        if (!s.frozen[i]) boxes_.ids.push_back(i);
 }
 
 double CollisionPass::impact_speed(const Model& m, double h) {
@@ -206,7 +219,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     for (const std::uint32_t i : moved_) touched_[i] = 0;
     moved_.clear();
     hold_sleepers(s);
-    build_boxes(s);
+    build_boxes(s, threads);
     broad_.find_pairs(boxes_, pairs_, islands_.asleep().data(), threads);
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.

@@ -43,8 +43,8 @@ public:
 
     explicit CollisionPass(std::size_t particles);
 
-    // Remembers where each particle starts the step.
-    void begin_step(const ParticleState& s);
+    // Remembers where each particle starts the step (on up to `threads` threads).
+    void begin_step(const ParticleState& s, std::size_t threads = 1);
     // Resolves the collisions of the step of length h just taken (s holds its end state). Returns
     // the number of impacts resolved; `moved()` lists the particles whose velocity changed. The
     // broad phase and the search for impacts run on up to `threads` threads; the impulses, the
@@ -74,7 +74,7 @@ private:
         std::uint32_t a, b;
         Vec3 n;
     };
-    void build_boxes(const ParticleState& s);
+    void build_boxes(const ParticleState& s, std::size_t threads);
     Vec3 at(std::uint32_t i, double t) const { return path_start_[i] + (t - path_time_[i]) * path_rate_[i]; }
     bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const;
     void hold_sleepers(ParticleState& s);
