@@ -167,23 +167,54 @@ void CollisionPass::keep_rest_on_walls(ParticleState& s, double impact) {
 }
 
 void CollisionPass::find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads) {
-    // Each pair's first contact along the current paths; threaded in slices of pairs (the hits
-    // are sorted afterwards, so the result is the same on any number of threads).
+    // Each queued pair's first contact along the current paths; threaded in slices of the queue
+    // (the hits are sorted afterwards, so the result is the same on any number of threads).
     hits_.clear();
-    const std::size_t slices = threads > 1 && pairs_.size() >= 4096 ? 4 * threads : 1;
+    const std::size_t count = queue_.size();
+    const std::size_t slices = threads > 1 && count >= 4096 ? 4 * threads : 1;
     auto scan = [&](std::size_t begin, std::size_t end, std::vector<Hit>& out) {
         Hit hit;
         for (std::size_t k = begin; k < end; ++k)
-            if (find_hit(s, pairs_[k], h, spin, impact, hit)) out.push_back(hit);
+            if (find_hit(s, pairs_[queue_[k]], h, spin, impact, hit)) out.push_back(hit);
     };
-    if (slices == 1) return scan(0, pairs_.size(), hits_);
+    if (slices == 1) return scan(0, count, hits_);
     slice_hits_.resize(slices);
     auto task = [&](std::size_t k) {
         slice_hits_[k].clear();
-        scan(pairs_.size() * k / slices, pairs_.size() * (k + 1) / slices, slice_hits_[k]);
+        scan(count * k / slices, count * (k + 1) / slices, slice_hits_[k]);
     };
     ThreadPool::shared().run(slices, threads, task);
     for (const std::vector<Hit>& slice : slice_hits_) hits_.insert(hits_.end(), slice.begin(), slice.end());
+}
+
+void CollisionPass::index_pairs(std::size_t particles) {
+    // Each particle's pairs (compressed rows: pair_start_[i] to pair_start_[i + 1] in pair_of_).
+    pair_start_.assign(particles + 1, 0);
+    for (const Pair& p : pairs_) {
+        ++pair_start_[p.a + 1];
+        ++pair_start_[p.b + 1];
+    }
+    for (std::size_t i = 1; i <= particles; ++i) pair_start_[i] += pair_start_[i - 1];
+    pair_fill_.assign(pair_start_.begin(), pair_start_.end() - 1);
+    pair_of_.resize(2 * pairs_.size());
+    for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
+        pair_of_[pair_fill_[pairs_[k].a]++] = k;
+        pair_of_[pair_fill_[pairs_[k].b]++] = k;
+    }
+    pair_queued_.assign(pairs_.size(), 0);
+}
+
+void CollisionPass::queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass) {
+    // Only a pair with a particle whose path the last pass changed can hold a new first contact:
+    // the others keep their paths, so they had no hit then and have none now (a hit both of whose
+    // particles were free would have been resolved).
+    queue_.clear();
+    for (const std::uint32_t i : resolved)
+        for (std::uint32_t k = pair_start_[i]; k < pair_start_[i + 1]; ++k)
+            if (pair_queued_[pair_of_[k]] != pass) {
+                pair_queued_[pair_of_[k]] = pass;
+                queue_.push_back(pair_of_[k]);
+            }
 }
 
 std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, double h, std::size_t threads) {
@@ -196,18 +227,25 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
     const bool spin = spin_matters(m);
     const double impact = impact_speed(m, h);
     std::uint64_t impulses = 0;
+    queue_.resize(pairs_.size());
+    for (std::uint32_t k = 0; k < pairs_.size(); ++k) queue_[k] = k;  // the first pass: every pair
     for (std::uint32_t pass = 1; pass <= static_cast<std::uint32_t>(max_passes); ++pass) {
         find_hits(s, h, spin, impact, threads);
         if (hits_.empty()) break;
         std::sort(hits_.begin(), hits_.end(), [](const Hit& x, const Hit& y) {
             return x.t != y.t ? x.t < y.t : (x.a != y.a ? x.a < y.a : x.b < y.b);
         });
+        resolved_.clear();
         for (const Hit& c : hits_) {
             if (stamp_[c.a] == pass || stamp_[c.b] == pass) continue;  // its path changed: next pass
             stamp_[c.a] = stamp_[c.b] = pass;
             resolve(s, m, c, spin);
+            resolved_.push_back(c.a);
+            resolved_.push_back(c.b);
             ++impulses;
         }
+        if (pass == 1) index_pairs(s.size());
+        queue_pairs_of(resolved_, pass + 1);
     }
     for (const std::uint32_t i : moved_) stamp_[i] = 0;  // only resolved particles carry a stamp
     const RoomBounds room(m.room);

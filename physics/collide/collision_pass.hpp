@@ -80,6 +80,8 @@ private:
     void hold_sleepers(ParticleState& s);
     void find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
     std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, std::size_t threads);
+    void index_pairs(std::size_t particles);
+    void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
     void remove_overlaps(ParticleState& s, const Model& m);
     void keep_rest_on_walls(ParticleState& s, double impact);
@@ -97,6 +99,9 @@ private:
     BroadPhase broad_;
     std::vector<Pair> pairs_;
     std::vector<Hit> hits_;
+    // The impact passes: the pairs a pass searches (all, then those of the particles the last
+    // pass resolved), and each particle's pairs to find them.
+    std::vector<std::uint32_t> queue_, resolved_, pair_start_, pair_fill_, pair_of_, pair_queued_;
     std::vector<std::vector<Hit>> slice_hits_;  // per slice of pairs, when threaded
     ContactSolver solver_;
     SleepIslands islands_;

@@ -132,31 +132,54 @@ void ContactSolver::warm_start() {
     }
 }
 
-void ContactSolver::apply(ParticleState& s, const SolverContact& c, const Vec3& impulse, bool spin) const {
-    // `impulse` acts on b (along +n pushes b away from a); a takes its opposite, at the contact
-    // point r_a n from its centre (b's is at -r_b n).
-    s.set_velocity(c.a, s.velocity(c.a) - impulse / s.mass[c.a]);
-    if (spin) s.set_spin(c.a, s.spin(c.a) + glm::cross(s.radius[c.a] * c.n, -impulse) * inverse_inertia(s, c.a));
-    if (c.is_wall()) return;
-    s.set_velocity(c.b, s.velocity(c.b) + impulse / s.mass[c.b]);
-    if (spin) s.set_spin(c.b, s.spin(c.b) + glm::cross(-s.radius[c.b] * c.n, impulse) * inverse_inertia(s, c.b));
+void ContactSolver::load_bodies(const ParticleState& s) {
+    if (slot_of_.size() < s.size()) slot_of_.resize(s.size());
+    body_.resize(bodies_.size());
+    v0_.resize(bodies_.size());
+    w0_.resize(bodies_.size());
+    for (std::uint32_t k = 0; k < bodies_.size(); ++k) {
+        const std::uint32_t i = bodies_[k];
+        slot_of_[i] = k;
+        body_[k] = {s.velocity(i), s.spin(i), s.mass[i], s.radius[i], inverse_inertia(s, i)};
+        v0_[k] = body_[k].v;
+        w0_[k] = body_[k].w;
+    }
+    for (SolverContact& c : contacts_) {
+        if (!c.active) continue;
+        c.body_a = slot_of_[c.a];
+        c.body_b = c.is_wall() ? 0 : slot_of_[c.b];
+    }
 }
 
-void ContactSolver::solve_contact(ParticleState& s, SolverContact& c, bool spin) const {
+void ContactSolver::apply(const SolverContact& c, const Vec3& impulse, bool spin) {
+    // `impulse` acts on b (along +n pushes b away from a); a takes its opposite, at the contact
+    // point r_a n from its centre (b's is at -r_b n).
+    Body& a = body_[c.body_a];
+    a.v = a.v - impulse / a.mass;
+    if (spin) a.w = a.w + glm::cross(a.radius * c.n, -impulse) * a.inverse_moment;
+    if (c.is_wall()) return;
+    Body& b = body_[c.body_b];
+    b.v = b.v + impulse / b.mass;
+    if (spin) b.w = b.w + glm::cross(-b.radius * c.n, impulse) * b.inverse_moment;
+}
+
+void ContactSolver::solve_contact(SolverContact& c, bool spin) {
+    const Body& a = body_[c.body_a];
+    const Body* b = c.is_wall() ? nullptr : &body_[c.body_b];
     auto relative_velocity = [&] {
         // Surface velocity of b minus a's at the contact point (a wall does not move).
-        Vec3 u = -s.velocity(c.a);
-        if (spin) u -= glm::cross(s.spin(c.a), s.radius[c.a] * c.n);
-        if (!c.is_wall()) {
-            u += s.velocity(c.b);
-            if (spin) u += glm::cross(s.spin(c.b), -s.radius[c.b] * c.n);
+        Vec3 u = -a.v;
+        if (spin) u -= glm::cross(a.w, a.radius * c.n);
+        if (b) {
+            u += b->v;
+            if (spin) u += glm::cross(b->w, -b->radius * c.n);
         }
         return u;
     };
     // Normal: u_n >= least_un, with lambda_n >= 0.
     const double un = glm::dot(relative_velocity(), c.n);
     const double lambda_n = std::max(c.lambda_n - c.normal_mass * (un - c.least_un), 0.0);
-    apply(s, c, (lambda_n - c.lambda_n) * c.n, spin);
+    apply(c, (lambda_n - c.lambda_n) * c.n, spin);
     c.lambda_n = lambda_n;
     // Friction: stop the sliding, within the Coulomb cone of today's normal impulse.
     if (!(c.friction > 0.0)) return;
@@ -165,7 +188,7 @@ void ContactSolver::solve_contact(ParticleState& s, SolverContact& c, bool spin)
     Vec3 lambda_t = c.lambda_t - c.tangent_mass * ut;
     const double bound = c.friction * c.lambda_n, size = glm::length(lambda_t);
     if (size > bound) lambda_t *= bound / size;
-    apply(s, c, lambda_t - c.lambda_t, spin);
+    apply(c, lambda_t - c.lambda_t, spin);
     c.lambda_t = lambda_t;
 }
 
@@ -173,18 +196,13 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
                                    const std::vector<Vec3>& start_spin) {
     if (contacts_.empty()) return 0;
     const bool spin = spin_matters(m);
-    v0_.resize(bodies_.size());
-    w0_.resize(bodies_.size());
-    for (std::size_t k = 0; k < bodies_.size(); ++k) {
-        v0_[k] = s.velocity(bodies_[k]);
-        w0_[k] = s.spin(bodies_[k]);
-    }
+    load_bodies(s);
     warm_start();
     for (const SolverContact& c : contacts_)
-        if (c.active) apply(s, c, c.lambda_n * c.n + c.lambda_t, spin);
+        if (c.active) apply(c, c.lambda_n * c.n + c.lambda_t, spin);
     for (int it = 0; it < iterations; ++it)
         for (SolverContact& c : contacts_)
-            if (c.active) solve_contact(s, c, spin);
+            if (c.active) solve_contact(c, spin);
     std::uint64_t loaded = 0;
     for (const SolverContact& c : contacts_) loaded += c.lambda_n > 0.0;
     // The impulses acted over the whole step: the end positions move by dv h (semi-implicit Euler,
@@ -194,6 +212,8 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
     // (v0 = v1 = 0) does no work, so that a still pile books nothing.
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
         const std::uint32_t i = bodies_[k];
+        s.set_velocity(i, body_[k].v);
+        s.set_spin(i, body_[k].w);
         const Vec3 dv = s.velocity(i) - v0_[k], dw = s.spin(i) - w0_[k];
         s.set_position(i, s.position(i) + h * dv);
         if (s.collision_work.empty()) continue;
