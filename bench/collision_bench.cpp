@@ -129,10 +129,10 @@ Gas pile(std::size_t n) {
 }
 
 // Steps of the pile from time `from` on (0.7 s: fallen and heaped, awake; 3 s: asleep).
-void run_pile(benchmark::State& state, std::size_t n, double from) {
+void run_pile(benchmark::State& state, std::size_t n, double from, int threads = 1) {
     const Gas g = pile(n);
     Simulation sim(g.model, g.particles);
-    sim.set_threads(1);
+    sim.set_threads(threads);
     sim.run_until(from);
     for (auto _ : state) sim.step();
     state.counters[rate_counter] =
@@ -141,21 +141,58 @@ void run_pile(benchmark::State& state, std::size_t n, double from) {
     state.counters["contacts"] = static_cast<double>(sim.resting_contacts()) / static_cast<double>(n);
 }
 
+#ifdef PL_HAS_BULLET
+// The same pile stepped by Bullet from the same time on (Bullet deactivates still bodies, as
+// particle-lab's islands sleep).
+void run_bullet_pile(benchmark::State& state, std::size_t n, double from) {
+    const Gas g = pile(n);
+    PeerScene scene;
+    scene.room = g.model.room;
+    scene.gravity = g.model.world.gravity;
+    scene.dt = g.model.integrator.dt;
+    scene.restitution = g.model.collisions.restitution;
+    scene.friction = g.model.collisions.friction;
+    scene.particles = g.particles;
+    BulletPeer peer(scene);
+    peer.step(static_cast<int>(std::lround(from / scene.dt)));
+    for (auto _ : state) peer.step(1);
+    state.counters[rate_counter] =
+        benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["contacts"] = static_cast<double>(peer.contacts()) / static_cast<double>(n);
+}
+#endif
+
 }  // namespace
 
 void register_collision_benchmarks() {
+    // Piles of 1e5 take minutes to settle before the first timed step (in both engines): run them
+    // by name, e.g. --benchmark_filter=pile.*n:100000.
 #ifdef PL_HAS_BULLET
-    for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}})
+    for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000}})
         benchmark::RegisterBenchmark(("collisions/peer/bullet/gas/n:" + std::to_string(n)).c_str(),
                                      [n](benchmark::State& s) { run_bullet_gas(s, n); })
             ->UseRealTime();
-#endif
+    // (Bullet's pile of 1e5 is not registered: at ~6 s a step it would take over half an hour
+    // to settle.)
     for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}})
+        benchmark::RegisterBenchmark(("collisions/peer/bullet/pile/settling/n:" + std::to_string(n)).c_str(),
+                                     [n](benchmark::State& s) { run_bullet_pile(s, n, 0.7); })
+            ->UseRealTime()
+            ->Iterations(20);
+#endif
+    for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000}}) {
+        const auto iterations = static_cast<benchmark::IterationCount>(n >= 100000 ? 5 : 20);
         for (const auto& [phase, from] : {std::pair{"settling", 0.7}, std::pair{"asleep", 3.0}})
             benchmark::RegisterBenchmark(("collisions/pile/" + std::string(phase) + "/n:" + std::to_string(n)).c_str(),
                                          [n, from](benchmark::State& s) { run_pile(s, n, from); })
                 ->UseRealTime()
-                ->Iterations(50);
+                ->Iterations(iterations);
+        if (n >= 10000)
+            benchmark::RegisterBenchmark(("collisions/pile/settling/threads:2/n:" + std::to_string(n)).c_str(),
+                                         [n](benchmark::State& s) { run_pile(s, n, 0.7, 2); })
+                ->UseRealTime()
+                ->Iterations(iterations);
+    }
     for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000}}) {
         for (const bool on : {false, true})
             benchmark::RegisterBenchmark(("collisions/gas/" + std::string(on ? "on" : "off") + "/n:" + std::to_string(n)).c_str(),
