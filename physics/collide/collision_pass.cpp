@@ -217,7 +217,8 @@ void CollisionPass::queue_pairs_of(const std::vector<std::uint32_t>& resolved, s
             }
 }
 
-std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, double h, std::size_t threads) {
+std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, double h, double impact,
+                                             std::size_t threads) {
     for (const Pair& p : pairs_)
         for (const std::uint32_t i : {p.a, p.b}) {
             path_start_[i] = start_[i];
@@ -225,7 +226,6 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
             path_rate_[i] = (s.position(i) - start_[i]) / h;
         }
     const bool spin = spin_matters(m);
-    const double impact = impact_speed(m, h);
     std::uint64_t impulses = 0;
     queue_.resize(pairs_.size());
     for (std::uint32_t k = 0; k < pairs_.size(); ++k) queue_[k] = k;  // the first pass: every pair
@@ -259,23 +259,26 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     hold_sleepers(s);
     build_boxes(s, threads);
     broad_.find_pairs(boxes_, pairs_, islands_.asleep().data(), threads);
-    const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, threads);
+    const double impact = impact_speed(m, h);
+    const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, impact, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
-    solver_.gather(s, m, pairs_, moved_, islands_.asleep(), h, impact_speed(m, h));
-    resting_ = solver_.solve(s, m, h, start_velocity_, start_spin_);
+    solver_.gather(s, m, pairs_, moved_, islands_.asleep(), h, impact);
+    resting_ = solver_.solve(s, m, h, start_velocity_, start_spin_, threads);
     for (const SolverContact& c : solver_.contacts()) {
         if (!c.active) continue;
         touch(c.a);
         if (!c.is_wall()) touch(c.b);
     }
-    keep_rest_on_walls(s, impact_speed(m, h));
+    keep_rest_on_walls(s, impact);
     remove_overlaps(s, m);
     const RoomBounds room(m.room);
     for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
     for (const Pair& p : pairs_)
         for (const std::uint32_t i : {p.a, p.b}) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+    // The one place islands wake in a step: every particle struck by an impact or in an active
+    // contact (a sleeping one touched by an awake one) is in moved_.
     for (const std::uint32_t i : moved_)
-        if (islands_.asleep()[i]) islands_.wake(i);  // struck by an impact or a contact
+        if (islands_.asleep()[i]) islands_.wake(i);
     islands_.update(s, solver_.contacts(), m.contact.rest_speed, h);
     return impacts;
 }

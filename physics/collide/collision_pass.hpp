@@ -79,7 +79,7 @@ private:
     bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const;
     void hold_sleepers(ParticleState& s);
     void find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
-    std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, std::size_t threads);
+    std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, double impact, std::size_t threads);
     void index_pairs(std::size_t particles);
     void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);

@@ -4,9 +4,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "physics/stepping/thread_pool.hpp"
+
 #include <algorithm>
-#include <iterator>
+#include <bit>
 #include <cmath>
+#include <iterator>
 
 namespace pl::collide {
 namespace {
@@ -192,17 +195,60 @@ void ContactSolver::solve_contact(SolverContact& c, bool spin) {
     c.lambda_t = lambda_t;
 }
 
+void ContactSolver::colour_contacts() {
+    // Greedy colouring in contact order: each active contact takes the first colour neither of
+    // its particles has taken yet (a wall is no particle); past 63 colours, the shared colour.
+    colours_of_body_.assign(body_.size(), 0);
+    colour_of_.resize(contacts_.size());
+    colour_start_.assign(shared_colour + 2, 0);
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+        const SolverContact& c = contacts_[k];
+        if (!c.active) continue;
+        const std::uint64_t taken = colours_of_body_[c.body_a] | (c.is_wall() ? 0 : colours_of_body_[c.body_b]);
+        const auto colour = static_cast<std::uint32_t>(std::min<int>(std::countr_one(taken), shared_colour));
+        if (colour < shared_colour) {
+            colours_of_body_[c.body_a] |= std::uint64_t{1} << colour;
+            if (!c.is_wall()) colours_of_body_[c.body_b] |= std::uint64_t{1} << colour;
+        }
+        colour_of_[k] = static_cast<std::uint8_t>(colour);
+        ++colour_start_[colour + 1];
+    }
+    for (std::size_t c = 1; c < colour_start_.size(); ++c) colour_start_[c] += colour_start_[c - 1];
+    by_colour_.resize(colour_start_.back());
+    next_in_colour_.assign(colour_start_.begin(), colour_start_.end() - 1);
+    for (std::uint32_t k = 0; k < contacts_.size(); ++k)
+        if (contacts_[k].active) by_colour_[next_in_colour_[colour_of_[k]]++] = k;
+}
+
+template <class Visit>
+void ContactSolver::for_each_coloured(std::size_t threads, Visit&& visit) {
+    // Colour by colour; a large colour's contacts in slices on the threads (they share no
+    // particle), the shared colour's one by one.
+    for (std::uint32_t colour = 0; colour <= shared_colour; ++colour) {
+        const std::uint32_t begin = colour_start_[colour], end = colour_start_[colour + 1];
+        if (threads < 2 || colour == shared_colour || end - begin < parallel_colour) {
+            for (std::uint32_t k = begin; k < end; ++k) visit(contacts_[by_colour_[k]]);
+            continue;
+        }
+        const std::size_t slices = 2 * threads;
+        auto task = [&](std::size_t t) {
+            const std::uint32_t from = begin + static_cast<std::uint32_t>((end - begin) * t / slices);
+            const std::uint32_t to = begin + static_cast<std::uint32_t>((end - begin) * (t + 1) / slices);
+            for (std::uint32_t k = from; k < to; ++k) visit(contacts_[by_colour_[k]]);
+        };
+        ThreadPool::shared().run(slices, threads, task);
+    }
+}
+
 std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
-                                   const std::vector<Vec3>& start_spin) {
+                                   const std::vector<Vec3>& start_spin, std::size_t threads) {
     if (contacts_.empty()) return 0;
     const bool spin = spin_matters(m);
     load_bodies(s);
     warm_start();
-    for (const SolverContact& c : contacts_)
-        if (c.active) apply(c, c.lambda_n * c.n + c.lambda_t, spin);
-    for (int it = 0; it < iterations; ++it)
-        for (SolverContact& c : contacts_)
-            if (c.active) solve_contact(c, spin);
+    colour_contacts();
+    for_each_coloured(threads, [&](const SolverContact& c) { apply(c, c.lambda_n * c.n + c.lambda_t, spin); });
+    for (int it = 0; it < iterations; ++it) for_each_coloured(threads, [&](SolverContact& c) { solve_contact(c, spin); });
     std::uint64_t loaded = 0;
     for (const SolverContact& c : contacts_) loaded += c.lambda_n > 0.0;
     // The impulses acted over the whole step: the end positions move by dv h (semi-implicit Euler,

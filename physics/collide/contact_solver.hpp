@@ -16,8 +16,13 @@
 //
 // Warm starting applies last step's impulses of the contacts that persist (same pair or same
 // particle and wall) before iterating: a pile's weight then reaches the floor over steps, not
-// only over the iterations of one step. One thread, in a fixed contact order: the same bits on
-// any number of threads.
+// only over the iterations of one step.
+//
+// Threads: the contacts are coloured greedily so that no two of one colour share a particle
+// (Box2D v3's constraint graph colouring), and each iteration solves the colours one after the
+// other, a colour's contacts at once on the threads. The order (colour by colour, contact order
+// within a colour) is the same on one thread, and contacts of one colour touch different
+// particles: the same bits on any number of threads.
 #pragma once
 
 #include "physics/collide/broad_phase.hpp"
@@ -68,7 +73,7 @@ public:
     // (from the velocities and spins at the start of the step). Returns the number of contacts
     // that carry an impulse, sleeping ones included.
     std::uint64_t solve(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
-                        const std::vector<Vec3>& start_spin);
+                        const std::vector<Vec3>& start_spin, std::size_t threads = 1);
 
     const std::vector<SolverContact>& contacts() const { return contacts_; }
 
@@ -84,6 +89,9 @@ private:
     void load_bodies(const ParticleState& s);
     void apply(const SolverContact& c, const Vec3& impulse, bool spin);
     void solve_contact(SolverContact& c, bool spin);
+    void colour_contacts();
+    template <class Visit>
+    void for_each_coloured(std::size_t threads, Visit&& visit);
 
     std::vector<SolverContact> contacts_, previous_, kept_, merged_;
     std::vector<std::uint32_t> bodies_;   // particles in some contact, increasing
@@ -91,6 +99,13 @@ private:
     std::vector<Vec3> v0_, w0_;           // velocity and spin of each body before the solve
     std::vector<Body> body_;              // per slot of bodies_
     std::vector<std::uint32_t> slot_of_;  // per particle: its slot in bodies_ (valid for bodies only)
+    // The colouring: the active contacts by colour (colour_start_[c] to colour_start_[c + 1] in
+    // by_colour_), and per body slot the colours its contacts took.
+    static constexpr std::uint32_t shared_colour = 63;  // the rest, which may share particles
+    std::vector<std::uint64_t> colours_of_body_;
+    std::vector<std::uint8_t> colour_of_;
+    std::vector<std::uint32_t> colour_start_, by_colour_, next_in_colour_;
+    static constexpr std::uint32_t parallel_colour = 512;  // smaller colours run on one thread
 };
 
 }  // namespace pl::collide

@@ -47,13 +47,7 @@ void SleepIslands::fall_asleep(const std::vector<std::uint32_t>& members) {
 
 void SleepIslands::update(const ParticleState& s, const std::vector<SolverContact>& contacts, double rest_speed,
                           double h) {
-    // Every contact found has an awake particle (two sleeping ones are not paired): its sleeping
-    // partner's island wakes, as does one struck by an impact or kicked by hand.
-    for (const SolverContact& c : contacts) {
-        if (!c.active) continue;  // a sleeping island's own contact, kept
-        wake_island(c.a);
-        if (!c.is_wall()) wake_island(c.b);
-    }
+    // (The islands touched by an awake particle, struck or kicked were woken before: wake().)
     for (const std::uint32_t i : members_) {
         in_contact_[i] = 0;
         parent_[i] = i;

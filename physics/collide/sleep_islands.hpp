@@ -25,9 +25,9 @@ public:
 
     explicit SleepIslands(std::size_t particles);
 
-    // After a step of length h: wakes the islands that were touched, struck or kicked, updates
-    // each awake particle's still time from its velocity and spin, and puts to sleep the islands
-    // still long enough. `rest_speed` <= 0: nothing sleeps.
+    // After a step of length h, once the islands touched, struck or kicked have been woken
+    // (wake): updates each awake particle's still time from its velocity and spin, and puts to
+    // sleep the islands still long enough. `rest_speed` <= 0: nothing sleeps.
     void update(const ParticleState& s, const std::vector<SolverContact>& contacts, double rest_speed, double h);
     // Wakes particle i's island now (its velocity was set from outside, or it was struck).
     void wake(std::uint32_t i);
