@@ -8,6 +8,10 @@
 # frames per second). The target: RTF >= 1 at 1e5 on 2 cores. A shared machine's load lowers
 # every number; the load average is printed with them. PL_MAX_FPS (default 10) and PL_COUNTS
 # (default "100000 1000000") change the frame cap and the particle counts.
+# PL_SCENE=gas measures colliding particles instead: the dilute gas of the collision benchmark
+# (balls of 5 mm, e = 1, no gravity or drag, the density of 1e4 balls in a 2 m box, the room
+# scaled with n), dt = 2 ms; PL_SCENE=pile the same balls poured into a room whose floor holds a
+# tenth of them side by side (gravity, e = 0.5, mu = 0.5: they settle about ten deep and sleep).
 #   bench/gui_rtf.sh [PARTICLE_LAB] [WARMUP] [MEASURE]
 set -euo pipefail
 cd "$(dirname "$(readlink -f "$0")")/.."
@@ -22,6 +26,32 @@ bash tests/gui/with_display.sh "$python" - "$bin" "$warmup" "$measure" "$tmp" <<
 import json, os, signal, subprocess, sys, time
 bin, warmup, measure, tmp = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
 base = json.load(open("presets/many_particles.json"))
+kind = os.environ.get("PL_SCENE", "drag")
+
+def scene_for(n):
+    if kind == "drag":
+        return dict(base, name=f"{n} particles", emitter=dict(base["emitter"], count=n))
+    s = dict(base, name=f"{n} colliding particles ({kind})")
+    s["integrator"] = {"method": "semi_implicit_euler", "dt": 0.002}
+    ball = {"count": n, "seed": 5, "mass_min": 0.001, "mass_max": 0.001, "radius_min": 0.005, "radius_max": 0.005}
+    if kind == "gas":
+        side = 2.0 * (n / 1e4) ** (1 / 3)
+        s["room"] = {"center": [0, 0, 0], "size": [side] * 3}
+        s["world"] = {"gravity": [0, 0, 0], "air": {"density": 1.225, "viscosity": 1.81e-5}}
+        s["drag"] = {"model": "none"}
+        s["contact"] = {"restitution": 1.0, "friction": 0.0, "rest_speed": 0.0}
+        s["collisions"] = {"enabled": True, "restitution": 1.0, "friction": 0.0}
+        s["emitter"] = dict(ball, region_min=[-0.475 * side] * 3, region_max=[0.475 * side] * 3, speed_min=0.5,
+                            speed_max=2.0, direction=[0, 1, 0], spread_deg=180)
+    else:
+        side = 0.01 * (n / 10) ** 0.5
+        s["room"] = {"center": [0, 0.5, 0], "size": [side, 1.0, side]}
+        s["contact"] = {"restitution": 0.5, "friction": 0.5, "rest_speed": 0.05}
+        s["collisions"] = {"enabled": True, "restitution": 0.5, "friction": 0.5}
+        s["emitter"] = dict(ball, region_min=[-side / 2 + 0.01, 0.05, -side / 2 + 0.01],
+                            region_max=[side / 2 - 0.01, 0.95, side / 2 - 0.01], speed_min=0, speed_max=0.5,
+                            direction=[0, 1, 0], spread_deg=180)
+    return s
 
 def dump(p, path):
     if os.path.exists(path): os.remove(path)
@@ -32,10 +62,9 @@ def dump(p, path):
         time.sleep(0.025)
     sys.exit("no state dump")
 
-print(f"GUI physics thread, --max-fps {os.environ.get('PL_MAX_FPS', '10')}, dt = {base['integrator']['dt'] * 1e3:g} ms, {os.cpu_count()} hardware threads")
+print(f"{kind}: GUI physics thread, --max-fps {os.environ.get('PL_MAX_FPS', '10')}, dt = {base['integrator']['dt'] * 1e3:g} ms, {os.cpu_count()} hardware threads")
 for n in [int(x) for x in os.environ.get("PL_COUNTS", "100000 1000000").split()]:
-    scene = dict(base, name=f"{n} particles")
-    scene["emitter"] = dict(base["emitter"], count=n)
+    scene = scene_for(n)
     preset = f"{tmp}/n{n}.json"
     json.dump(scene, open(preset, "w"))
     state = f"{tmp}/state.json"
