@@ -3,7 +3,8 @@
 // collisions on and off,
 // the naive all-pairs test of the same swept boxes (O(n^2), up to where it is bearable), and a
 // pile (balls of 2 cm dropped on a floor sized for about ten layers) while it settles, awake,
-// and once it sleeps.
+// and once it sleeps; on one and two threads; and the gas and the settling pile in Bullet (the
+// peer, peers/bullet_peer.hpp).
 #include "physics/collide/broad_phase.hpp"
 #ifdef PL_HAS_BULLET
 #include "peers/bullet_peer.hpp"
@@ -87,8 +88,7 @@ void run_pairs(benchmark::State& state, std::size_t n, bool grid) {
 
 #ifdef PL_HAS_BULLET
 // The same gas stepped by Bullet (peers/bullet_peer.hpp): same particles, room, dt, e and mu.
-void run_bullet_gas(benchmark::State& state, std::size_t n) {
-    const Gas g = dilute_gas(n, true);
+PeerScene peer_scene(const Gas& g) {
     PeerScene scene;
     scene.room = g.model.room;
     scene.gravity = g.model.world.gravity;
@@ -96,7 +96,11 @@ void run_bullet_gas(benchmark::State& state, std::size_t n) {
     scene.restitution = g.model.collisions.restitution;
     scene.friction = g.model.collisions.friction;
     scene.particles = g.particles;
-    BulletPeer peer(scene);
+    return scene;
+}
+
+void run_bullet_gas(benchmark::State& state, std::size_t n) {
+    BulletPeer peer(peer_scene(dilute_gas(n, true)));
     peer.step(10);
     for (auto _ : state) peer.step(1);
     state.counters[rate_counter] =
@@ -146,15 +150,8 @@ void run_pile(benchmark::State& state, std::size_t n, double from, int threads =
 // particle-lab's islands sleep).
 void run_bullet_pile(benchmark::State& state, std::size_t n, double from) {
     const Gas g = pile(n);
-    PeerScene scene;
-    scene.room = g.model.room;
-    scene.gravity = g.model.world.gravity;
-    scene.dt = g.model.integrator.dt;
-    scene.restitution = g.model.collisions.restitution;
-    scene.friction = g.model.collisions.friction;
-    scene.particles = g.particles;
-    BulletPeer peer(scene);
-    peer.step(static_cast<int>(std::lround(from / scene.dt)));
+    BulletPeer peer(peer_scene(g));
+    peer.step(static_cast<int>(std::lround(from / g.model.integrator.dt)));
     for (auto _ : state) peer.step(1);
     state.counters[rate_counter] =
         benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);

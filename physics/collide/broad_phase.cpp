@@ -79,8 +79,9 @@ void BroadPhase::choose_cell(const SweptBoxes& boxes, std::size_t tasks) {
 
 void BroadPhase::size_grid(const double (&high)[3]) {
     // The linear index of every cell must fit 32 bits (and each coordinate 21): in a vast, nearly
-    // empty room the cells grow until it does, which costs nothing there.
-    for (;;) {
+    // empty room the cells grow until it does, which costs nothing there. (Bounded: 2048
+    // doublings take any finite double past any finite span.)
+    for (int doubling = 0; doubling < 2048; ++doubling) {
         inverse_cell_ = 1.0 / cell_;
         std::uint64_t cells[3];
         bool fits = true;
@@ -100,9 +101,12 @@ void BroadPhase::size_grid(const double (&high)[3]) {
         }
         cell_ *= 2.0;
     }
+    stride_y_ = stride_z_ = cell_count_ = 1;  // not finite: every box in one cell
+    passes_ = digit_ = 1;
 }
 
-void BroadPhase::enter_boxes(const SweptBoxes& boxes, std::size_t begin, std::size_t end, Part& part) {
+void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t begin, std::size_t end,
+                             Part& part) {
     part.entries.clear();
     part.big.clear();
     const std::uint32_t digit_mask = (1u << digit_) - 1;  // the radix sort's first digit, counted here
@@ -119,6 +123,7 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, std::size_t begin, std::si
             part.big.push_back(i);
             continue;
         }
+        const std::uint32_t id = i | (asleep && asleep[i] ? 0u : awake_bit);
         float lo_f[3], hi_f[3];
         for (int k = 0; k < 3; ++k) {
             box_[i].lo[k] = boxes.lo[k][i];
@@ -133,7 +138,7 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, std::size_t begin, std::si
                     Entry& e = part.entries.emplace_back();
                     e.cell = static_cast<std::uint32_t>(linear(x, y, z));
                     ++count[e.cell & digit_mask];
-                    e.id = i;
+                    e.id = id;
                     for (int k = 0; k < 3; ++k) {
                         e.lo[k] = lo_f[k];
                         e.hi[k] = hi_f[k];
@@ -193,28 +198,28 @@ void BroadPhase::radix_sort(std::size_t tasks) {
     }
 }
 
-std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, const std::uint8_t* asleep,
-                                   std::vector<Pair>& pairs) const {
+std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs) const {
     // Two entries of a cell pair when one of them is awake, their boxes overlap and this cell
     // holds the low corner of the boxes' intersection (the one cell of the several they may share
-    // that reports them). Returns the number of cells.
-    auto sleeps = [asleep](std::uint32_t i) { return asleep && asleep[i]; };
+    // that reports them). A cell of sleeping entries only is passed over. Returns the number of
+    // cells.
     std::size_t cells = 0;
     for (std::size_t run = begin; run < end; ++cells) {
         const std::uint64_t cell = entries_[run].cell;
         std::size_t run_end = run + 1;
-        while (run_end < end && entries_[run_end].cell == cell) ++run_end;
-        for (std::size_t p = run; p + 1 < run_end; ++p) {
+        std::uint32_t awake = entries_[run].id & awake_bit;
+        for (; run_end < end && entries_[run_end].cell == cell; ++run_end) awake |= entries_[run_end].id & awake_bit;
+        for (std::size_t p = run; awake && p + 1 < run_end; ++p) {
             const Entry& ep = entries_[p];
             for (std::size_t q = p + 1; q < run_end; ++q) {
                 const Entry& eq = entries_[q];
-                if (ep.lo[0] > eq.hi[0] || eq.lo[0] > ep.hi[0] || ep.lo[1] > eq.hi[1] || eq.lo[1] > ep.hi[1] ||
-                    ep.lo[2] > eq.hi[2] || eq.lo[2] > ep.hi[2])
-                    continue;  // apart even in the rounded-out boxes
-                const std::uint32_t i = ep.id, j = eq.id;
+                if (!((ep.id | eq.id) & awake_bit) || ep.lo[0] > eq.hi[0] || eq.lo[0] > ep.hi[0] || ep.lo[1] > eq.hi[1] ||
+                    eq.lo[1] > ep.hi[1] || ep.lo[2] > eq.hi[2] || eq.lo[2] > ep.hi[2])
+                    continue;  // both asleep, or apart even in the rounded-out boxes
+                const std::uint32_t i = ep.id & ~awake_bit, j = eq.id & ~awake_bit;
                 const Box &a = box_[i], &b = box_[j];
                 if (a.lo[0] > b.hi[0] || b.lo[0] > a.hi[0] || a.lo[1] > b.hi[1] || b.lo[1] > a.hi[1] ||
-                    a.lo[2] > b.hi[2] || b.lo[2] > a.hi[2] || (sleeps(i) && sleeps(j)))
+                    a.lo[2] > b.hi[2] || b.lo[2] > a.hi[2])
                     continue;
                 const std::uint64_t home = linear(coordinate(std::max(a.lo[0], b.lo[0]), 0),
                                                   coordinate(std::max(a.lo[1], b.lo[1]), 1),
@@ -251,10 +256,10 @@ void BroadPhase::adapt_cell(std::size_t cells) {
     else if (per_cell > 16.0 && scale_ > 0) --scale_;
 }
 
-std::size_t BroadPhase::scan(const std::uint8_t* asleep, std::vector<Pair>& pairs, std::size_t threads) {
+std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
     // Below a few thousand entries a thread costs more to wake than its share saves.
     const std::size_t slices = threads > 1 && entry_count_ >= 4096 ? 4 * threads : 1;
-    if (slices == 1) return scan_cells(0, entry_count_, asleep, pairs);
+    if (slices == 1) return scan_cells(0, entry_count_, pairs);
     // Slices of about equal size, each starting at a cell's first entry.
     slice_start_.assign(slices + 1, entry_count_);
     for (std::size_t k = 0; k < slices; ++k) {
@@ -266,7 +271,7 @@ std::size_t BroadPhase::scan(const std::uint8_t* asleep, std::vector<Pair>& pair
     slice_cells_.assign(slices, 0);
     run(slices, [&](std::size_t k) {
         slice_pairs_[k].clear();
-        slice_cells_[k] = scan_cells(slice_start_[k], std::max(slice_start_[k], slice_start_[k + 1]), asleep, slice_pairs_[k]);
+        slice_cells_[k] = scan_cells(slice_start_[k], std::max(slice_start_[k], slice_start_[k + 1]), slice_pairs_[k]);
     });
     std::size_t cells = 0;
     for (std::size_t k = 0; k < slices; ++k) {
@@ -288,10 +293,10 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
     if (parts_.size() < tasks) parts_.resize(tasks);
     if (box_.size() < boxes.lo[0].size()) box_.resize(boxes.lo[0].size());
     choose_cell(boxes, tasks);
-    run(tasks, [&](std::size_t t) { enter_boxes(boxes, m * t / tasks, m * (t + 1) / tasks, parts_[t]); });
+    run(tasks, [&](std::size_t t) { enter_boxes(boxes, asleep, m * t / tasks, m * (t + 1) / tasks, parts_[t]); });
     for (std::size_t t = 0; t < tasks; ++t) big_.insert(big_.end(), parts_[t].big.begin(), parts_[t].big.end());
     radix_sort(tasks);
-    const std::size_t cells = scan(asleep, pairs, threads);
+    const std::size_t cells = scan(pairs, threads);
     pair_big_ones(boxes, asleep, pairs);
     std::sort(pairs.begin(), pairs.end());
     adapt_cell(cells);

@@ -72,9 +72,10 @@ private:
     // A box entered in a cell, with the box in floats rounded outwards: a cell's entries are
     // tested from consecutive memory, and only the pairs that pass read their exact boxes.
     // 32 bytes: the sort moves little.
+    static constexpr std::uint32_t awake_bit = 0x80000000u;  // in Entry::id
     struct Entry {
         std::uint32_t cell;  // linear cell index
-        std::uint32_t id;
+        std::uint32_t id;    // the particle, with awake_bit set when it is awake
         float lo[3], hi[3];
     };
     // One thread's share of the particles: the entries it made and the big ones it found.
@@ -92,11 +93,11 @@ private:
     void size_grid(const double (&high)[3]);
     std::uint64_t coordinate(double x, int axis) const;
     std::uint64_t linear(std::uint64_t x, std::uint64_t y, std::uint64_t z) const { return x + stride_y_ * y + stride_z_ * z; }
-    void enter_boxes(const SweptBoxes& boxes, std::size_t begin, std::size_t end, Part& part);
+    void enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t begin, std::size_t end, Part& part);
     void radix_sort(std::size_t tasks);
     void radix_pass(const std::vector<Source>& sources, Entry* out, int shift, std::uint32_t mask, bool counted);
-    std::size_t scan_cells(std::size_t begin, std::size_t end, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
-    std::size_t scan(const std::uint8_t* asleep, std::vector<Pair>& pairs, std::size_t threads);
+    std::size_t scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs) const;
+    std::size_t scan(std::vector<Pair>& pairs, std::size_t threads);
     void pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
     void adapt_cell(std::size_t cells);
     template <class Task>

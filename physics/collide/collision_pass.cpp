@@ -258,7 +258,13 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     moved_.clear();
     hold_sleepers(s);
     build_boxes(s, threads);
-    broad_.find_pairs(boxes_, pairs_, islands_.asleep().data(), threads);
+    // Pairs of two sleeping particles are left out: with every particle asleep there are none,
+    // and a pile asleep costs no broad phase at all.
+    const std::vector<std::uint8_t>& asleep = islands_.asleep();
+    if (std::any_of(boxes_.ids.begin(), boxes_.ids.end(), [&](std::uint32_t i) { return !asleep[i]; }))
+        broad_.find_pairs(boxes_, pairs_, asleep.data(), threads);
+    else
+        pairs_.clear();
     const double impact = impact_speed(m, h);
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, impact, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
