@@ -259,7 +259,11 @@ void BroadPhase::adapt_cell(std::size_t cells) {
 std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
     // Below a few thousand entries a thread costs more to wake than its share saves.
     const std::size_t slices = threads > 1 && entry_count_ >= 4096 ? 4 * threads : 1;
-    if (slices == 1) return scan_cells(0, entry_count_, pairs);
+    if (slices == 1) {
+        const std::size_t cells = scan_cells(0, entry_count_, pairs);
+        std::sort(pairs.begin(), pairs.end());
+        return cells;
+    }
     // Slices of about equal size, each starting at a cell's first entry.
     slice_start_.assign(slices + 1, entry_count_);
     for (std::size_t k = 0; k < slices; ++k) {
@@ -272,13 +276,37 @@ std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
     run(slices, [&](std::size_t k) {
         slice_pairs_[k].clear();
         slice_cells_[k] = scan_cells(slice_start_[k], std::max(slice_start_[k], slice_start_[k + 1]), slice_pairs_[k]);
+        std::sort(slice_pairs_[k].begin(), slice_pairs_[k].end());  // each slice sorted on its thread
     });
     std::size_t cells = 0;
-    for (std::size_t k = 0; k < slices; ++k) {
-        pairs.insert(pairs.end(), slice_pairs_[k].begin(), slice_pairs_[k].end());
-        cells += slice_cells_[k];
-    }
+    for (std::size_t k = 0; k < slices; ++k) cells += slice_cells_[k];
+    merge_slices(pairs);
     return cells;
+}
+
+void BroadPhase::merge_slices(std::vector<Pair>& pairs) {
+    // The sorted slices merged two by two (log2 of the slices passes over the pairs, instead of
+    // sorting them all on one thread).
+    run_end_.clear();
+    pairs.clear();
+    for (const std::vector<Pair>& slice : slice_pairs_) {
+        pairs.insert(pairs.end(), slice.begin(), slice.end());
+        run_end_.push_back(pairs.size());
+    }
+    while (run_end_.size() > 1) {
+        merged_.resize(pairs.size());
+        std::size_t begin = 0, kept = 0;
+        for (std::size_t r = 0; r < run_end_.size(); r += 2) {
+            const std::size_t middle = run_end_[r], end = r + 1 < run_end_.size() ? run_end_[r + 1] : middle;
+            std::merge(pairs.begin() + static_cast<std::ptrdiff_t>(begin), pairs.begin() + static_cast<std::ptrdiff_t>(middle),
+                       pairs.begin() + static_cast<std::ptrdiff_t>(middle), pairs.begin() + static_cast<std::ptrdiff_t>(end),
+                       merged_.begin() + static_cast<std::ptrdiff_t>(begin));
+            run_end_[kept++] = end;
+            begin = end;
+        }
+        run_end_.resize(kept);
+        pairs.swap(merged_);
+    }
 }
 
 void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
@@ -296,9 +324,11 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
     run(tasks, [&](std::size_t t) { enter_boxes(boxes, asleep, m * t / tasks, m * (t + 1) / tasks, parts_[t]); });
     for (std::size_t t = 0; t < tasks; ++t) big_.insert(big_.end(), parts_[t].big.begin(), parts_[t].big.end());
     radix_sort(tasks);
-    const std::size_t cells = scan(pairs, threads);
+    const std::size_t cells = scan(pairs, threads);  // sorted
+    const auto from_grid = static_cast<std::ptrdiff_t>(pairs.size());
     pair_big_ones(boxes, asleep, pairs);
-    std::sort(pairs.begin(), pairs.end());
+    std::sort(pairs.begin() + from_grid, pairs.end());
+    std::inplace_merge(pairs.begin(), pairs.begin() + from_grid, pairs.end());
     adapt_cell(cells);
 }
 

@@ -98,6 +98,7 @@ private:
     void radix_pass(const std::vector<Source>& sources, Entry* out, int shift, std::uint32_t mask, bool counted);
     std::size_t scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs) const;
     std::size_t scan(std::vector<Pair>& pairs, std::size_t threads);
+    void merge_slices(std::vector<Pair>& pairs);
     void pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
     void adapt_cell(std::size_t cells);
     template <class Task>
@@ -119,6 +120,8 @@ private:
     std::vector<std::size_t> slice_start_;  // slice boundaries (at cell boundaries), when threaded
     std::vector<std::size_t> slice_cells_;
     std::vector<std::vector<Pair>> slice_pairs_;  // per slice, when threaded
+    std::vector<std::size_t> run_end_;            // the merge's sorted runs
+    std::vector<Pair> merged_;
 };
 
 // The reference: every pair tested, O(n^2).

@@ -37,9 +37,34 @@ double inverse_inertia(const ParticleState& s, std::uint32_t i) {
 
 }  // namespace
 
+bool ContactSolver::pair_contact(const ParticleState& s, const Model& m, const Pair& p,
+                                 const std::vector<std::uint8_t>& asleep, double h, double impact, bool spin,
+                                 SolverContact& c) {
+    if (s.frozen[p.a] || s.frozen[p.b]) return false;
+    const Vec3 d = s.position(p.b) - s.position(p.a);
+    const double len = glm::length(d);
+    if (!(len > 0.0)) return false;  // concentric: no normal (the overlap pass opens them)
+    const double reach = s.radius[p.a] + s.radius[p.b];
+    const Vec3 n = d / len;
+    const double closing = glm::dot(s.velocity(p.b) - s.velocity(p.a), n);
+    const double gap = len - reach;
+    if (gap > contact_margin * reach + std::max(-closing, 0.0) * h) return false;
+    c = SolverContact{};
+    c.a = p.a;
+    c.b = p.b;
+    c.n = n;
+    c.least_un = least_normal_velocity(gap, closing, h, impact);
+    const double inv_a = 1.0 / s.mass[p.a], inv_b = 1.0 / s.mass[p.b];
+    c.normal_mass = 1.0 / (inv_a + inv_b);
+    c.tangent_mass = 1.0 / (inv_a + inv_b + (spin ? inv_a / s.inertia[p.a] + inv_b / s.inertia[p.b] : 0.0));
+    c.friction = m.collisions.friction;
+    c.active = !(asleep[p.a] && asleep[p.b]);
+    return true;
+}
+
 void ContactSolver::gather(const ParticleState& s, const Model& m, const std::vector<Pair>& pairs,
                            const std::vector<std::uint32_t>& struck, const std::vector<std::uint8_t>& asleep, double h,
-                           double impact) {
+                           double impact, std::size_t threads) {
     previous_.swap(contacts_);
     contacts_.clear();
     bodies_.clear();
@@ -50,29 +75,27 @@ void ContactSolver::gather(const ParticleState& s, const Model& m, const std::ve
         in_body_[i] = 1;
         bodies_.push_back(i);
     };
-    for (const Pair& p : pairs) {
-        if (s.frozen[p.a] || s.frozen[p.b]) continue;
-        const Vec3 d = s.position(p.b) - s.position(p.a);
-        const double len = glm::length(d);
-        if (!(len > 0.0)) continue;  // concentric: no normal (the overlap pass opens them)
-        const double reach = s.radius[p.a] + s.radius[p.b];
-        const Vec3 n = d / len;
-        const double closing = glm::dot(s.velocity(p.b) - s.velocity(p.a), n);
-        const double gap = len - reach;
-        if (gap > contact_margin * reach + std::max(-closing, 0.0) * h) continue;
+    auto gather_pairs = [&](std::size_t begin, std::size_t end, std::vector<SolverContact>& out) {
         SolverContact c;
-        c.a = p.a;
-        c.b = p.b;
-        c.n = n;
-        c.least_un = least_normal_velocity(gap, closing, h, impact);
-        const double inv_a = 1.0 / s.mass[p.a], inv_b = 1.0 / s.mass[p.b];
-        c.normal_mass = 1.0 / (inv_a + inv_b);
-        c.tangent_mass = 1.0 / (inv_a + inv_b + (spin ? inv_a / s.inertia[p.a] + inv_b / s.inertia[p.b] : 0.0));
-        c.friction = m.collisions.friction;
-        c.active = !(asleep[p.a] && asleep[p.b]);
-        contacts_.push_back(c);
-        add_body(p.a);
-        add_body(p.b);
+        for (std::size_t k = begin; k < end; ++k)
+            if (pair_contact(s, m, pairs[k], asleep, h, impact, spin, c)) out.push_back(c);
+    };
+    // Threaded in slices of pairs, concatenated in order: the same contacts on any thread count.
+    const std::size_t slices = threads > 1 && pairs.size() >= 8192 ? 2 * threads : 1;
+    if (slices == 1) {
+        gather_pairs(0, pairs.size(), contacts_);
+    } else {
+        slice_contacts_.resize(slices);
+        auto task = [&](std::size_t k) {
+            slice_contacts_[k].clear();
+            gather_pairs(pairs.size() * k / slices, pairs.size() * (k + 1) / slices, slice_contacts_[k]);
+        };
+        ThreadPool::shared().run(slices, threads, task);
+        for (const std::vector<SolverContact>& slice : slice_contacts_) contacts_.insert(contacts_.end(), slice.begin(), slice.end());
+    }
+    for (const SolverContact& c : contacts_) {
+        add_body(c.a);
+        add_body(c.b);
     }
     // The walls under (and beside) the particles of the pair contacts and of this step's impacts:
     // the pile's weight, or a blow from above, has to reach the floor inside the same solve. A

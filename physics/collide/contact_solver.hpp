@@ -67,7 +67,7 @@ public:
     // listed (islands are made of contacts) but not solved.
     void gather(const ParticleState& s, const Model& m, const std::vector<Pair>& pairs,
                 const std::vector<std::uint32_t>& struck, const std::vector<std::uint8_t>& asleep, double h,
-                double impact);
+                double impact, std::size_t threads = 1);
     // Solves them; changes the velocities (and spins) of s, and moves the end positions by the
     // velocity changes times h. Adds the contacts' work on each particle to s.collision_work
     // (from the velocities and spins at the start of the step). Returns the number of contacts
@@ -84,6 +84,9 @@ private:
         Vec3 v, w;
         double mass, radius, inverse_moment;  // 1 / (k m r^2)
     };
+    // The contact of a candidate pair, if its surfaces are close enough (false: none).
+    static bool pair_contact(const ParticleState& s, const Model& m, const Pair& p, const std::vector<std::uint8_t>& asleep,
+                             double h, double impact, bool spin, SolverContact& c);
     void keep_sleeping(const std::vector<std::uint8_t>& asleep);
     void warm_start();
     void load_bodies(const ParticleState& s);
@@ -94,6 +97,7 @@ private:
     void for_each_coloured(std::size_t threads, Visit&& visit);
 
     std::vector<SolverContact> contacts_, previous_, kept_, merged_;
+    std::vector<std::vector<SolverContact>> slice_contacts_;  // per slice of pairs, when threaded
     std::vector<std::uint32_t> bodies_;   // particles in some contact, increasing
     std::vector<std::uint8_t> in_body_;   // per particle: 1 if listed in bodies_
     std::vector<Vec3> v0_, w0_;           // velocity and spin of each body before the solve
