@@ -9,7 +9,7 @@
 namespace pl::collide {
 namespace {
 
-constexpr double most_cells_per_axis = 2097151.0;  // 2^21 - 1: the linear index fits 63 bits
+constexpr double most_cells_per_axis = 2097151.0;  // 2^21 - 1 (and the linear index fits 32 bits)
 constexpr int radix_bits = 11;                      // a 2048-bin histogram stays in the L1 cache
 constexpr int largest_scale = 4;                    // the cell is at most 16 median boxes
 
