@@ -177,10 +177,9 @@ void BroadPhase::radix_sort(std::size_t tasks) {
     // cell's entries keep the order of their ids. The first pass reads the parts where they were
     // made; the later ones equal slices of the last pass's output.
     std::size_t total = 0;
-    std::vector<Source>& sources = sources_;
-    sources.resize(tasks);
+    sources_.resize(tasks);
     for (std::size_t t = 0; t < tasks; ++t) {
-        sources[t] = {parts_[t].entries.data(), parts_[t].entries.data() + parts_[t].entries.size()};
+        sources_[t] = {parts_[t].entries.data(), parts_[t].entries.data() + parts_[t].entries.size()};
         total += parts_[t].entries.size();
     }
     if (entries_.size() < total) {  // grown, never cleared: no step pays for zeroing them
@@ -193,8 +192,8 @@ void BroadPhase::radix_sort(std::size_t tasks) {
         // Every pass writes the other buffer; the last one writes entries_. The first pass's
         // histograms were counted as the entries were made.
         Entry* out = (passes_ - pass) % 2 == 1 ? entries_.data() : spare_.data();
-        radix_pass(sources, out, pass * digit_, mask, pass == 0);
-        for (std::size_t t = 0; t < tasks; ++t) sources[t] = {out + total * t / tasks, out + total * (t + 1) / tasks};
+        radix_pass(sources_, out, pass * digit_, mask, pass == 0);
+        for (std::size_t t = 0; t < tasks; ++t) sources_[t] = {out + total * t / tasks, out + total * (t + 1) / tasks};
     }
 }
 

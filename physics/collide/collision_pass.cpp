@@ -1,6 +1,7 @@
 #include "physics/collide/collision_pass.hpp"
 
 #include "physics/collide/narrow_phase.hpp"
+#include "physics/collide/slices.hpp"
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/energy.hpp"
 #include "physics/stepping/thread_pool.hpp"
@@ -170,21 +171,12 @@ void CollisionPass::find_hits(const ParticleState& s, double h, bool spin, doubl
     // Each queued pair's first contact along the current paths; threaded in slices of the queue
     // (the hits are sorted afterwards, so the result is the same on any number of threads).
     hits_.clear();
-    const std::size_t count = queue_.size();
-    const std::size_t slices = threads > 1 && count >= 4096 ? 4 * threads : 1;
-    auto scan = [&](std::size_t begin, std::size_t end, std::vector<Hit>& out) {
-        Hit hit;
-        for (std::size_t k = begin; k < end; ++k)
-            if (find_hit(s, pairs_[queue_[k]], h, spin, impact, hit)) out.push_back(hit);
-    };
-    if (slices == 1) return scan(0, count, hits_);
-    slice_hits_.resize(slices);
-    auto task = [&](std::size_t k) {
-        slice_hits_[k].clear();
-        scan(count * k / slices, count * (k + 1) / slices, slice_hits_[k]);
-    };
-    ThreadPool::shared().run(slices, threads, task);
-    for (const std::vector<Hit>& slice : slice_hits_) hits_.insert(hits_.end(), slice.begin(), slice.end());
+    append_in_slices(queue_.size(), threads, 4096, slice_hits_, hits_,
+                     [&](std::size_t begin, std::size_t end, std::vector<Hit>& out) {
+                         Hit hit;
+                         for (std::size_t k = begin; k < end; ++k)
+                             if (find_hit(s, pairs_[queue_[k]], h, spin, impact, hit)) out.push_back(hit);
+                     });
 }
 
 void CollisionPass::index_pairs(std::size_t particles) {
@@ -268,7 +260,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     const double impact = impact_speed(m, h);
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, impact, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
-    solver_.gather(s, m, pairs_, moved_, islands_.asleep(), h, impact, threads);
+    solver_.gather(s, m, pairs_, moved_, asleep, h, impact, threads);
     resting_ = solver_.solve(s, m, h, start_velocity_, start_spin_, threads);
     for (const SolverContact& c : solver_.contacts()) {
         if (!c.active) continue;

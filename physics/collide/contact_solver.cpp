@@ -1,5 +1,6 @@
 #include "physics/collide/contact_solver.hpp"
 
+#include "physics/collide/slices.hpp"
 #include "physics/stepping/contact.hpp"
 
 #include <glm/geometric.hpp>
@@ -75,24 +76,13 @@ void ContactSolver::gather(const ParticleState& s, const Model& m, const std::ve
         in_body_[i] = 1;
         bodies_.push_back(i);
     };
-    auto gather_pairs = [&](std::size_t begin, std::size_t end, std::vector<SolverContact>& out) {
-        SolverContact c;
-        for (std::size_t k = begin; k < end; ++k)
-            if (pair_contact(s, m, pairs[k], asleep, h, impact, spin, c)) out.push_back(c);
-    };
-    // Threaded in slices of pairs, concatenated in order: the same contacts on any thread count.
-    const std::size_t slices = threads > 1 && pairs.size() >= 8192 ? 2 * threads : 1;
-    if (slices == 1) {
-        gather_pairs(0, pairs.size(), contacts_);
-    } else {
-        slice_contacts_.resize(slices);
-        auto task = [&](std::size_t k) {
-            slice_contacts_[k].clear();
-            gather_pairs(pairs.size() * k / slices, pairs.size() * (k + 1) / slices, slice_contacts_[k]);
-        };
-        ThreadPool::shared().run(slices, threads, task);
-        for (const std::vector<SolverContact>& slice : slice_contacts_) contacts_.insert(contacts_.end(), slice.begin(), slice.end());
-    }
+    // Threaded in slices of pairs, joined in order: the same contacts on any thread count.
+    append_in_slices(pairs.size(), threads, 8192, slice_contacts_, contacts_,
+                     [&](std::size_t begin, std::size_t end, std::vector<SolverContact>& out) {
+                         SolverContact c;
+                         for (std::size_t k = begin; k < end; ++k)
+                             if (pair_contact(s, m, pairs[k], asleep, h, impact, spin, c)) out.push_back(c);
+                     });
     for (const SolverContact& c : contacts_) {
         add_body(c.a);
         add_body(c.b);
