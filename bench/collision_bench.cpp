@@ -70,8 +70,8 @@ void run_pairs(benchmark::State& state, std::size_t n, bool grid) {
         const ParticleSpec& p = g.particles[i];
         for (int k = 0; k < 3; ++k) {
             const double end = p.position[k] + g.model.integrator.dt * p.velocity[k];
-            boxes.lo[k][i] = std::min(p.position[k], end) - p.radius;
-            boxes.hi[k][i] = std::max(p.position[k], end) + p.radius;
+            boxes.box[i].lo[k] = std::min(p.position[k], end) - p.radius;
+            boxes.box[i].hi[k] = std::max(p.position[k], end) + p.radius;
         }
         boxes.ids.push_back(i);
     }

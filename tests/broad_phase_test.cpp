@@ -19,8 +19,8 @@ SweptBoxes random_boxes(std::size_t n, double side, double r_min, double r_max, 
         const double r = rad(rng);
         for (int k = 0; k < 3; ++k) {
             const double x0 = pos(rng) - 0.5 * side, x1 = x0 + step(rng);
-            b.lo[k][i] = std::min(x0, x1) - r;
-            b.hi[k][i] = std::max(x0, x1) + r;
+            b.box[i].lo[k] = std::min(x0, x1) - r;
+            b.box[i].hi[k] = std::max(x0, x1) + r;
         }
         b.ids.push_back(i);
     }
@@ -51,9 +51,9 @@ TEST(BroadPhase, FewBigBallsGoToTheirOwnList) {
     SweptBoxes boxes = random_boxes(3000, 1.0, 0.005, 0.005, 0.0, 3);
     for (std::uint32_t i : {7u, 1500u, 2999u})
         for (int k = 0; k < 3; ++k) {
-            const double c = 0.5 * (boxes.lo[k][i] + boxes.hi[k][i]);
-            boxes.lo[k][i] = c - 0.2;
-            boxes.hi[k][i] = c + 0.2;
+            const double c = 0.5 * (boxes.box[i].lo[k] + boxes.box[i].hi[k]);
+            boxes.box[i].lo[k] = c - 0.2;
+            boxes.box[i].hi[k] = c + 0.2;
         }
     expect_same_pairs(boxes, 100);
     BroadPhase grid;
@@ -82,9 +82,9 @@ TEST(BroadPhase, PairsOfTwoSleepingParticlesAreLeftOut) {
     SweptBoxes boxes = random_boxes(3000, 0.6, 0.01, 0.01, 0.002, 5);
     for (std::uint32_t i : {9u, 1500u, 2998u})
         for (int k = 0; k < 3; ++k) {
-            const double c = 0.5 * (boxes.lo[k][i] + boxes.hi[k][i]);
-            boxes.lo[k][i] = c - 0.15;
-            boxes.hi[k][i] = c + 0.15;
+            const double c = 0.5 * (boxes.box[i].lo[k] + boxes.box[i].hi[k]);
+            boxes.box[i].lo[k] = c - 0.15;
+            boxes.box[i].hi[k] = c + 0.15;
         }
     std::vector<std::uint8_t> asleep(3000);
     for (std::uint32_t i = 0; i < 3000; ++i) asleep[i] = i % 3 != 0;
@@ -123,14 +123,47 @@ TEST(BroadPhase, SameOnTwoThreadsAndAsTheCellAdapts) {
     }
 }
 
+TEST(BroadPhase, BoxesThatMoveAndParticlesThatLeaveOverCalls) {
+    // Each call enters the boxes in the order of the last call's cells. The boxes move between
+    // calls (the order is stale), particles leave and come back (as frozen ones do: the order is
+    // of other ids) and two grow big (they have no cell): every call still gives every pair.
+    SweptBoxes boxes = random_boxes(12000, 1.2, 0.004, 0.01, 0.003, 8);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> shift(-0.01, 0.01);
+    BroadPhase serial, threaded;
+    std::vector<Pair> slow, one, two;
+    for (int call = 0; call < 8; ++call) {
+        for (SweptBox& b : boxes.box)
+            for (int k = 0; k < 3; ++k) {
+                const double d = shift(rng);
+                b.lo[k] += d;
+                b.hi[k] += d;
+            }
+        if (call == 3) boxes.ids.erase(boxes.ids.begin() + 10, boxes.ids.begin() + 4000);
+        if (call == 5) {
+            boxes.ids.resize(boxes.box.size());
+            for (std::uint32_t i = 0; i < boxes.ids.size(); ++i) boxes.ids[i] = i;
+            for (const std::uint32_t i : {17u, 9000u})
+                for (int k = 0; k < 3; ++k) boxes.box[i].hi[k] = boxes.box[i].lo[k] + 1.0;
+        }
+        all_pairs(boxes, slow);
+        serial.find_pairs(boxes, one, nullptr, 1);
+        threaded.find_pairs(boxes, two, nullptr, 2);
+        EXPECT_EQ(one, slow) << "call " << call;
+        EXPECT_EQ(two, slow) << "call " << call;
+        EXPECT_GT(slow.size(), 300u);
+    }
+    EXPECT_EQ(serial.big_count(), 2u);
+}
+
 TEST(BroadPhase, VastRoomAndSharedCorners) {
     // Balls of 1 mm over a kilometre: 1e18 cells of the median box; the cells grow until their
     // index fits, and the pairs are still exact. Then boxes that touch exactly at their corners
     // and faces (on cell boundaries): each pair once.
     SweptBoxes vast = random_boxes(2000, 1000.0, 0.001, 0.001, 0.0, 7);
     for (int k = 0; k < 3; ++k) {  // one close pair among them
-        vast.lo[k][1] = vast.lo[k][0] + 0.0015;
-        vast.hi[k][1] = vast.hi[k][0] + 0.0015;
+        vast.box[1].lo[k] = vast.box[0].lo[k] + 0.0015;
+        vast.box[1].hi[k] = vast.box[0].hi[k] + 0.0015;
     }
     expect_same_pairs(vast, 1);
     SweptBoxes lattice;
@@ -138,8 +171,8 @@ TEST(BroadPhase, VastRoomAndSharedCorners) {
     for (std::uint32_t i = 0; i < 512; ++i) {
         const double c[3] = {0.1 * (i % 8), 0.1 * (i / 8 % 8), 0.1 * (i / 64)};
         for (int k = 0; k < 3; ++k) {
-            lattice.lo[k][i] = c[k] - 0.05;
-            lattice.hi[k][i] = c[k] + 0.05;
+            lattice.box[i].lo[k] = c[k] - 0.05;
+            lattice.box[i].hi[k] = c[k] + 0.05;
         }
         lattice.ids.push_back(i);
     }

@@ -55,7 +55,7 @@ TEST(CollisionMomentum, KeptToRoundOffOverAMillionCollisions) {
             for (int k = 0; k < 3; ++k) x[k] -= side * std::floor(x[k] / side + 0.5);
             s.set_position(i, x);
         }
-        pass.begin_step(s);
+        pass.begin_step(s, m);
         for (std::size_t i = 0; i < n; ++i) s.set_position(i, s.position(i) + h * s.velocity(i));
         collisions += pass.end_step(s, m, h);
         ++steps;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <stdexcept>
 
 namespace pl::collide {
 namespace {
@@ -20,15 +21,9 @@ float above(double x) { return static_cast<float>(x + (std::abs(x) * 0x1p-22 + 1
 
 }  // namespace
 
-void SweptBoxes::resize(std::size_t n) {
-    for (int k = 0; k < 3; ++k) {
-        lo[k].resize(n);
-        hi[k].resize(n);
-    }
-}
-
 double SweptBoxes::extent(std::uint32_t i) const {
-    return std::max({hi[0][i] - lo[0][i], hi[1][i] - lo[1][i], hi[2][i] - lo[2][i]});
+    const SweptBox& b = box[i];
+    return std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
 }
 
 template <class Task>
@@ -53,15 +48,20 @@ void BroadPhase::choose_cell(const SweptBoxes& boxes, std::size_t tasks) {
     std::nth_element(sample_.begin(), sample_.begin() + static_cast<std::ptrdiff_t>(sample_.size() / 2), sample_.end());
     run(tasks, [&](std::size_t t) {
         Part& part = parts_[t];
+        const SweptBox* box = boxes.box.data();
+        double low[3], top[3];  // locals: kept in registers
         for (int k = 0; k < 3; ++k) {
-            const double *lo = boxes.lo[k].data(), *hi = boxes.hi[k].data();
-            double low = lo[boxes.ids[0]], top = hi[boxes.ids[0]];  // locals: kept in registers
-            for (std::size_t n = m * t / tasks; n < m * (t + 1) / tasks; ++n) {
-                low = std::min(low, lo[boxes.ids[n]]);
-                top = std::max(top, hi[boxes.ids[n]]);
+            low[k] = box[boxes.ids[0]].lo[k];
+            top[k] = box[boxes.ids[0]].hi[k];
+        }
+        for (std::size_t n = m * t / tasks; n < m * (t + 1) / tasks; ++n)
+            for (int k = 0; k < 3; ++k) {
+                low[k] = std::min(low[k], box[boxes.ids[n]].lo[k]);
+                top[k] = std::max(top[k], box[boxes.ids[n]].hi[k]);
             }
-            part.low[k] = low;
-            part.high[k] = top;
+        for (int k = 0; k < 3; ++k) {
+            part.low[k] = low[k];
+            part.high[k] = top[k];
         }
     });
     double high[3];
@@ -74,10 +74,10 @@ void BroadPhase::choose_cell(const SweptBoxes& boxes, std::size_t tasks) {
         }
     }
     cell_ = std::ldexp(sample_[sample_.size() / 2], scale_);  // > 0: every box holds a sphere
-    size_grid(high);
+    size_grid(high, m);
 }
 
-void BroadPhase::size_grid(const double (&high)[3]) {
+void BroadPhase::size_grid(const double (&high)[3], std::size_t boxes) {
     // The linear index of every cell must fit 32 bits (and each coordinate 21): in a vast, nearly
     // empty room the cells grow until it does, which costs nothing there. (Bounded: 2048
     // doublings take any finite double past any finite span.)
@@ -95,7 +95,11 @@ void BroadPhase::size_grid(const double (&high)[3]) {
             stride_z_ = cells[0] * cells[1];
             cell_count_ = stride_z_ * cells[2];
             const int bits = std::max(1, static_cast<int>(std::bit_width(cell_count_ - 1)));
-            passes_ = (bits + radix_bits - 1) / radix_bits;
+            // One counting-sort pass when the cells are not many more than the boxes (its
+            // histogram then costs no more than the entries): the boxes come in the order of
+            // their last cells, so its writes run almost in sequence. Else LSD radix passes.
+            const int one_pass = std::max(radix_bits, static_cast<int>(std::bit_width(2 * boxes)));
+            passes_ = bits <= one_pass ? 1 : (bits + radix_bits - 1) / radix_bits;
             digit_ = (bits + passes_ - 1) / passes_;
             return;
         }
@@ -105,6 +109,15 @@ void BroadPhase::size_grid(const double (&high)[3]) {
     passes_ = digit_ = 1;
 }
 
+void BroadPhase::reuse_or_reset_order(const SweptBoxes& boxes) {
+    // The last call's order of space serves while the same particles take part (they moved a
+    // step at most: the order is still nearly that of their cells); else the order of the ids.
+    if (ordered_ids_ != boxes.ids || order_.size() != boxes.ids.size()) {
+        ordered_ids_ = boxes.ids;
+        order_ = boxes.ids;
+    }
+}
+
 void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t begin, std::size_t end,
                              Part& part) {
     part.entries.clear();
@@ -112,12 +125,17 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
     const std::uint32_t digit_mask = (1u << digit_) - 1;  // the radix sort's first digit, counted here
     part.count.assign(std::size_t{digit_mask} + 1, 0);
     std::uint32_t* count = part.count.data();
+    const std::uint32_t* order = order_.data();
+    const SweptBox* box = boxes.box.data();
+    constexpr std::size_t ahead = 16;  // the order of space is not that of memory: fetch ahead
     for (std::size_t n = begin; n < end; ++n) {
-        const std::uint32_t i = boxes.ids[n];
+        if (n + ahead < end) __builtin_prefetch(&box[order[n + ahead]]);
+        const std::uint32_t i = order[n];
+        const SweptBox& b = box[i];
         std::uint64_t lo[3], hi[3];
         for (int k = 0; k < 3; ++k) {
-            lo[k] = coordinate(boxes.lo[k][i], k);
-            hi[k] = coordinate(boxes.hi[k][i], k);
+            lo[k] = coordinate(b.lo[k], k);
+            hi[k] = coordinate(b.hi[k], k);
         }
         if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > max_cells) {
             part.big.push_back(i);
@@ -126,11 +144,10 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
         const std::uint32_t id = i | (asleep && asleep[i] ? 0u : awake_bit);
         float lo_f[3], hi_f[3];
         for (int k = 0; k < 3; ++k) {
-            box_[i].lo[k] = boxes.lo[k][i];
-            box_[i].hi[k] = boxes.hi[k][i];
-            lo_f[k] = below(boxes.lo[k][i]);
-            hi_f[k] = above(boxes.hi[k][i]);
+            lo_f[k] = below(b.lo[k]);
+            hi_f[k] = above(b.hi[k]);
         }
+        std::uint32_t home = home_bit;  // the first cell entered is the low corner's
         for (std::uint64_t z = lo[2]; z <= hi[2]; ++z)
             for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
                 for (std::uint64_t x = lo[0]; x <= hi[0]; ++x) {
@@ -138,7 +155,8 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
                     Entry& e = part.entries.emplace_back();
                     e.cell = static_cast<std::uint32_t>(linear(x, y, z));
                     ++count[e.cell & digit_mask];
-                    e.id = id;
+                    e.id = id | home;
+                    home = 0;
                     for (int k = 0; k < 3; ++k) {
                         e.lo[k] = lo_f[k];
                         e.hi[k] = hi_f[k];
@@ -197,17 +215,23 @@ void BroadPhase::radix_sort(std::size_t tasks) {
     }
 }
 
-std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs) const {
+std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs,
+                                   std::vector<std::uint32_t>& homes) const {
     // Two entries of a cell pair when one of them is awake, their boxes overlap and this cell
     // holds the low corner of the boxes' intersection (the one cell of the several they may share
-    // that reports them). A cell of sleeping entries only is passed over. Returns the number of
-    // cells.
+    // that reports them). A cell of sleeping entries only is passed over. The particles whose home
+    // this cell is are appended to `homes` (the next call's order). Returns the number of cells.
+    const SweptBox* box = boxes_->box.data();
     std::size_t cells = 0;
     for (std::size_t run = begin; run < end; ++cells) {
         const std::uint64_t cell = entries_[run].cell;
-        std::size_t run_end = run + 1;
-        std::uint32_t awake = entries_[run].id & awake_bit;
-        for (; run_end < end && entries_[run_end].cell == cell; ++run_end) awake |= entries_[run_end].id & awake_bit;
+        std::size_t run_end = run;
+        std::uint32_t awake = 0;
+        for (; run_end < end && entries_[run_end].cell == cell; ++run_end) {
+            const std::uint32_t id = entries_[run_end].id;
+            awake |= id & awake_bit;
+            if (id & home_bit) homes.push_back(id & id_mask);
+        }
         for (std::size_t p = run; awake && p + 1 < run_end; ++p) {
             const Entry& ep = entries_[p];
             for (std::size_t q = p + 1; q < run_end; ++q) {
@@ -215,8 +239,8 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
                 if (!((ep.id | eq.id) & awake_bit) || ep.lo[0] > eq.hi[0] || eq.lo[0] > ep.hi[0] || ep.lo[1] > eq.hi[1] ||
                     eq.lo[1] > ep.hi[1] || ep.lo[2] > eq.hi[2] || eq.lo[2] > ep.hi[2])
                     continue;  // both asleep, or apart even in the rounded-out boxes
-                const std::uint32_t i = ep.id & ~awake_bit, j = eq.id & ~awake_bit;
-                const Box &a = box_[i], &b = box_[j];
+                const std::uint32_t i = ep.id & id_mask, j = eq.id & id_mask;
+                const SweptBox &a = box[i], &b = box[j];
                 if (a.lo[0] > b.hi[0] || b.lo[0] > a.hi[0] || a.lo[1] > b.hi[1] || b.lo[1] > a.hi[1] ||
                     a.lo[2] > b.hi[2] || b.lo[2] > a.hi[2])
                     continue;
@@ -258,8 +282,9 @@ void BroadPhase::adapt_cell(std::size_t cells) {
 std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
     // Below a few thousand entries a thread costs more to wake than its share saves.
     const std::size_t slices = threads > 1 && entry_count_ >= 4096 ? 4 * threads : 1;
+    order_.clear();
     if (slices == 1) {
-        const std::size_t cells = scan_cells(0, entry_count_, pairs);
+        const std::size_t cells = scan_cells(0, entry_count_, pairs, order_);
         std::sort(pairs.begin(), pairs.end());
         return cells;
     }
@@ -271,14 +296,20 @@ std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
         slice_start_[k] = at;
     }
     slice_pairs_.resize(slices);
+    slice_homes_.resize(slices);
     slice_cells_.assign(slices, 0);
     run(slices, [&](std::size_t k) {
         slice_pairs_[k].clear();
-        slice_cells_[k] = scan_cells(slice_start_[k], std::max(slice_start_[k], slice_start_[k + 1]), slice_pairs_[k]);
+        slice_homes_[k].clear();
+        slice_cells_[k] = scan_cells(slice_start_[k], std::max(slice_start_[k], slice_start_[k + 1]), slice_pairs_[k],
+                                     slice_homes_[k]);
         std::sort(slice_pairs_[k].begin(), slice_pairs_[k].end());  // each slice sorted on its thread
     });
     std::size_t cells = 0;
-    for (std::size_t k = 0; k < slices; ++k) cells += slice_cells_[k];
+    for (std::size_t k = 0; k < slices; ++k) {
+        cells += slice_cells_[k];
+        order_.insert(order_.end(), slice_homes_[k].begin(), slice_homes_[k].end());
+    }
     merge_slices(pairs);
     return cells;
 }
@@ -315,16 +346,18 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
     entry_count_ = 0;
     const std::size_t m = boxes.ids.size();
     if (m < 2) return;
+    if (boxes.ids.back() > id_mask) throw std::length_error("broad phase: a particle index of 2^30 or more");
     threads_ = threads;
+    boxes_ = &boxes;
+    reuse_or_reset_order(boxes);
     const std::size_t tasks = threads > 1 && m >= 8192 ? threads : 1;
     if (parts_.size() < tasks) parts_.resize(tasks);
-    if (box_.size() < boxes.lo[0].size()) box_.resize(boxes.lo[0].size());
     choose_cell(boxes, tasks);
     run(tasks, [&](std::size_t t) { enter_boxes(boxes, asleep, m * t / tasks, m * (t + 1) / tasks, parts_[t]); });
     for (std::size_t t = 0; t < tasks; ++t) big_.insert(big_.end(), parts_[t].big.begin(), parts_[t].big.end());
     radix_sort(tasks);
-    const std::size_t cells = scan(pairs, threads);  // sorted
-    const auto from_grid = static_cast<std::ptrdiff_t>(pairs.size());
+    const std::size_t cells = scan(pairs, threads);  // sorted; the home cells' order made
+    order_.insert(order_.end(), big_.begin(), big_.end());    const auto from_grid = static_cast<std::ptrdiff_t>(pairs.size());
     pair_big_ones(boxes, asleep, pairs);
     std::sort(pairs.begin() + from_grid, pairs.end());
     std::inplace_merge(pairs.begin(), pairs.begin() + from_grid, pairs.end());

@@ -34,16 +34,23 @@ struct Pair {
     friend bool operator<(const Pair& p, const Pair& q) { return p.a != q.a ? p.a < q.a : p.b < q.b; }
 };
 
-// Swept boxes, one per particle index (structure of arrays); `ids` lists the particles that take
-// part (frozen ones are left out), in increasing order.
+// A swept box: the axis-aligned box around the sphere over one step, from its start to its end.
+struct SweptBox {
+    double lo[3], hi[3];
+};
+
+// Swept boxes, one per particle index (one box in one cache line or two: the broad phase reads
+// them in the order of space, not of the indices); `ids` lists the particles that take part
+// (frozen ones are left out), in increasing order.
 struct SweptBoxes {
-    std::vector<double> lo[3], hi[3];
+    std::vector<SweptBox> box;
     std::vector<std::uint32_t> ids;
 
-    void resize(std::size_t n);
+    void resize(std::size_t n) { box.resize(n); }
     bool overlap(std::uint32_t i, std::uint32_t j) const {
-        return lo[0][i] <= hi[0][j] && lo[0][j] <= hi[0][i] && lo[1][i] <= hi[1][j] && lo[1][j] <= hi[1][i] &&
-               lo[2][i] <= hi[2][j] && lo[2][j] <= hi[2][i];
+        const SweptBox &a = box[i], &b = box[j];
+        return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+               a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
     }
     double extent(std::uint32_t i) const;  // the box's largest side
 };
@@ -66,16 +73,15 @@ public:
     std::size_t entry_count() const { return entry_count_; }  // cell entries, last call
 
 private:
-    struct Box {
-        double lo[3], hi[3];
-    };
     // A box entered in a cell, with the box in floats rounded outwards: a cell's entries are
     // tested from consecutive memory, and only the pairs that pass read their exact boxes.
     // 32 bytes: the sort moves little.
-    static constexpr std::uint32_t awake_bit = 0x80000000u;  // in Entry::id
+    static constexpr std::uint32_t awake_bit = 0x80000000u;  // in Entry::id: the particle is awake
+    static constexpr std::uint32_t home_bit = 0x40000000u;   // in Entry::id: the cell of its low corner
+    static constexpr std::uint32_t id_mask = home_bit - 1;
     struct Entry {
         std::uint32_t cell;  // linear cell index
-        std::uint32_t id;    // the particle, with awake_bit set when it is awake
+        std::uint32_t id;    // the particle, with awake_bit and home_bit
         float lo[3], hi[3];
     };
     // One thread's share of the particles: the entries it made and the big ones it found.
@@ -90,13 +96,15 @@ private:
         const Entry* end;
     };
     void choose_cell(const SweptBoxes& boxes, std::size_t tasks);
-    void size_grid(const double (&high)[3]);
+    void size_grid(const double (&high)[3], std::size_t boxes);
     std::uint64_t coordinate(double x, int axis) const;
     std::uint64_t linear(std::uint64_t x, std::uint64_t y, std::uint64_t z) const { return x + stride_y_ * y + stride_z_ * z; }
+    void reuse_or_reset_order(const SweptBoxes& boxes);
     void enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t begin, std::size_t end, Part& part);
     void radix_sort(std::size_t tasks);
     void radix_pass(const std::vector<Source>& sources, Entry* out, int shift, std::uint32_t mask, bool counted);
-    std::size_t scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs) const;
+    std::size_t scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs,
+                           std::vector<std::uint32_t>& homes) const;
     std::size_t scan(std::vector<Pair>& pairs, std::size_t threads);
     void merge_slices(std::vector<Pair>& pairs);
     void pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
@@ -113,13 +121,17 @@ private:
     std::size_t entry_count_ = 0;
     std::vector<double> sample_;
     std::vector<std::uint32_t> big_;
-    std::vector<Box> box_;                  // per particle index
+    const SweptBoxes* boxes_ = nullptr;     // during a call
+    // The ids in the order of their home cells at the last call, then the big ones: the next call
+    // enters the boxes in this order (for the ids it was made from, `ordered_ids_`).
+    std::vector<std::uint32_t> order_, ordered_ids_;
     std::vector<Part> parts_;               // per task of the build
     std::vector<Source> sources_;           // of the radix sort's pass
     std::vector<Entry> entries_, spare_;    // sorted by cell
     std::vector<std::size_t> slice_start_;  // slice boundaries (at cell boundaries), when threaded
     std::vector<std::size_t> slice_cells_;
     std::vector<std::vector<Pair>> slice_pairs_;  // per slice, when threaded
+    std::vector<std::vector<std::uint32_t>> slice_homes_;
     std::vector<std::size_t> run_end_;            // the merge's sorted runs
     std::vector<Pair> merged_;
 };

@@ -45,13 +45,17 @@ CollisionPass::CollisionPass(std::size_t particles)
     boxes_.resize(particles);
 }
 
-void CollisionPass::begin_step(const ParticleState& s, std::size_t threads) {
+void CollisionPass::begin_step(const ParticleState& s, const Model& m, std::size_t threads) {
+    // The start of the step: positions (the swept boxes; sleepers go back there), velocities and,
+    // in a scene with spin, spins (the contacts' work). Without spin the solver turns nothing.
+    const bool spin = spin_matters(m);
     for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             start_[i] = s.position(i);
             start_velocity_[i] = s.velocity(i);
-            start_spin_[i] = s.spin(i);
         }
+        if (spin)
+            for (std::size_t i = begin; i < end; ++i) start_spin_[i] = s.spin(i);
     });
 }
 
@@ -61,8 +65,8 @@ void CollisionPass::build_boxes(const ParticleState& s, std::size_t threads) {
             const Vec3 stop = s.position(i);
             const double r = s.radius[i];
             for (int k = 0; k < 3; ++k) {
-                boxes_.lo[k][i] = std::min(start_[i][k], stop[k]) - r;
-                boxes_.hi[k][i] = std::max(start_[i][k], stop[k]) + r;
+                boxes_.box[i].lo[k] = std::min(start_[i][k], stop[k]) - r;
+                boxes_.box[i].hi[k] = std::max(start_[i][k], stop[k]) + r;
             }
         }
     });

@@ -44,7 +44,7 @@ public:
     explicit CollisionPass(std::size_t particles);
 
     // Remembers where each particle starts the step (on up to `threads` threads).
-    void begin_step(const ParticleState& s, std::size_t threads = 1);
+    void begin_step(const ParticleState& s, const Model& m, std::size_t threads = 1);
     // Resolves the collisions of the step of length h just taken (s holds its end state). Returns
     // the number of impacts resolved; `moved()` lists the particles whose velocity changed. The
     // broad phase and the search for impacts run on up to `threads` threads; the impulses, the

@@ -277,8 +277,9 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
         s.set_position(i, s.position(i) + h * dv);
         if (s.collision_work.empty()) continue;
         const double mi = s.mass[i], moment = s.inertia[i] * mi * s.radius[i] * s.radius[i];
+        // Without spin dw = 0 and start_spin is not kept (the term is zero).
         s.collision_work[i] += mi * glm::dot(dv, 0.5 * (start_velocity[i] + s.velocity(i))) +
-                               moment * glm::dot(dw, 0.5 * (start_spin[i] + s.spin(i)));
+                               (spin ? moment * glm::dot(dw, 0.5 * (start_spin[i] + s.spin(i))) : 0.0);
     }
     return loaded;
 }

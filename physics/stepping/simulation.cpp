@@ -111,7 +111,7 @@ void Simulation::run_until(double t) {
 }
 
 void Simulation::collide_step() {
-    collisions_->begin_step(state_, thread_count(threads_));
+    collisions_->begin_step(state_, model_, thread_count(threads_));
     kernel_(context(), 1);
     collisions_last_step_ = collisions_->end_step(state_, model_, dt(), thread_count(threads_));
     collisions_total_ += collisions_last_step_;
