@@ -89,34 +89,45 @@ void ContactSolver::gather(const ParticleState& s, const Model& m, const std::ve
     }
     // The walls under (and beside) the particles of the pair contacts and of this step's impacts:
     // the pile's weight, or a blow from above, has to reach the floor inside the same solve. A
-    // particle touching no other is the kernel's alone.
+    // particle touching no other is the kernel's alone. Made in the order of the bodies, so that
+    // one merge puts them among the pair contacts (both lists in (a, b, wall) order).
     for (const std::uint32_t i : struck) add_body(i);
-    const RoomBounds room(m.room);
-    const std::size_t pair_contacts = contacts_.size();
-    for (const std::uint32_t i : bodies_) {
-        const Vec3 v = s.velocity(i);
-        for (int w = 0; w < wall_count; ++w) {
-            const Vec3 inward = RoomBounds::inward_normal(w);
-            const double gap = room.distance(w, s.position(i), s.radius[i]);
-            const double closing = glm::dot(v, inward);  // the wall's velocity (0) minus the particle's, along n
-            if (gap > contact_margin * s.radius[i] + std::max(-closing, 0.0) * h) continue;
-            SolverContact c;
-            c.a = i;
-            c.b = SolverContact::wall_contact;
-            c.wall = static_cast<std::uint8_t>(w);
-            c.n = -inward;  // from the particle into the wall
-            c.least_un = least_normal_velocity(gap, closing, h, impact);
-            c.normal_mass = s.mass[i];
-            c.tangent_mass = 1.0 / (1.0 / s.mass[i] + (spin ? 1.0 / (s.inertia[i] * s.mass[i]) : 0.0));
-            c.friction = m.contact.friction;
-            c.active = !asleep[i];
-            contacts_.push_back(c);
-        }
-    }
-    if (contacts_.size() > pair_contacts) std::sort(contacts_.begin(), contacts_.end(), before);
-    keep_sleeping(asleep);
     std::sort(bodies_.begin(), bodies_.end());
     for (const std::uint32_t i : bodies_) in_body_[i] = 0;
+    walls_.clear();
+    append_in_slices(bodies_.size(), threads, 8192, slice_contacts_, walls_,
+                     [&](std::size_t begin, std::size_t end, std::vector<SolverContact>& out) {
+                         for (std::size_t k = begin; k < end; ++k) wall_contacts(s, m, bodies_[k], asleep, h, impact, spin, out);
+                     });
+    if (!walls_.empty()) {
+        merged_.clear();
+        std::merge(contacts_.begin(), contacts_.end(), walls_.begin(), walls_.end(), std::back_inserter(merged_), before);
+        contacts_.swap(merged_);
+    }
+    keep_sleeping(asleep);
+}
+
+void ContactSolver::wall_contacts(const ParticleState& s, const Model& m, std::uint32_t i,
+                                  const std::vector<std::uint8_t>& asleep, double h, double impact, bool spin,
+                                  std::vector<SolverContact>& out) {
+    const RoomBounds room(m.room);
+    const Vec3 v = s.velocity(i);
+    for (int w = 0; w < wall_count; ++w) {
+        const Vec3 inward = RoomBounds::inward_normal(w);
+        const double gap = room.distance(w, s.position(i), s.radius[i]);
+        const double closing = glm::dot(v, inward);  // the wall's velocity (0) minus the particle's, along n
+        if (gap > contact_margin * s.radius[i] + std::max(-closing, 0.0) * h) continue;
+        SolverContact& c = out.emplace_back();
+        c.a = i;
+        c.b = SolverContact::wall_contact;
+        c.wall = static_cast<std::uint8_t>(w);
+        c.n = -inward;  // from the particle into the wall
+        c.least_un = least_normal_velocity(gap, closing, h, impact);
+        c.normal_mass = s.mass[i];
+        c.tangent_mass = 1.0 / (1.0 / s.mass[i] + (spin ? 1.0 / (s.inertia[i] * s.mass[i]) : 0.0));
+        c.friction = m.contact.friction;
+        c.active = !asleep[i];
+    }
 }
 
 void ContactSolver::keep_sleeping(const std::vector<std::uint8_t>& asleep) {

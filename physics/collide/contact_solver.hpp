@@ -87,6 +87,10 @@ private:
     // The contact of a candidate pair, if its surfaces are close enough (false: none).
     static bool pair_contact(const ParticleState& s, const Model& m, const Pair& p, const std::vector<std::uint8_t>& asleep,
                              double h, double impact, bool spin, SolverContact& c);
+    // The contacts of particle i with the walls it is close to, appended to `out` in wall order.
+    static void wall_contacts(const ParticleState& s, const Model& m, std::uint32_t i,
+                              const std::vector<std::uint8_t>& asleep, double h, double impact, bool spin,
+                              std::vector<SolverContact>& out);
     void keep_sleeping(const std::vector<std::uint8_t>& asleep);
     void warm_start();
     void load_bodies(const ParticleState& s);
@@ -96,7 +100,7 @@ private:
     template <class Visit>
     void for_each_coloured(std::size_t threads, Visit&& visit);
 
-    std::vector<SolverContact> contacts_, previous_, kept_, merged_;
+    std::vector<SolverContact> contacts_, previous_, kept_, merged_, walls_;
     std::vector<std::vector<SolverContact>> slice_contacts_;  // per slice of pairs, when threaded
     std::vector<std::uint32_t> bodies_;   // particles in some contact, increasing
     std::vector<std::uint8_t> in_body_;   // per particle: 1 if listed in bodies_
