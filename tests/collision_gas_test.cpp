@@ -110,8 +110,10 @@ TEST(CollisionImpulse, MomentumKeptEnergyNotGainedSlidingStopped) {
     std::uniform_real_distribution<double> u(-1.0, 1.0), pos(0.1, 1.0);
     int sticks = 0;
     for (int trial = 0; trial < 1000; ++trial) {
-        const Body a{{u(rng), u(rng), u(rng)}, {5 * u(rng), 5 * u(rng), 5 * u(rng)}, pos(rng), 0.1 * pos(rng), 0.4};
-        const Body b{{u(rng), u(rng), u(rng)}, {5 * u(rng), 5 * u(rng), 5 * u(rng)}, pos(rng), 0.1 * pos(rng), 2.0 / 3.0};
+        Body a{{u(rng), u(rng), u(rng)}, {5 * u(rng), 5 * u(rng), 5 * u(rng)}, pos(rng), 0.1 * pos(rng), 0.4};
+        Body b{{u(rng), u(rng), u(rng)}, {5 * u(rng), 5 * u(rng), 5 * u(rng)}, pos(rng), 0.1 * pos(rng), 2.0 / 3.0};
+        a.moment *= a.mass * a.radius * a.radius;  // I = k m r^2: a solid and a hollow ball
+        b.moment *= b.mass * b.radius * b.radius;
         const Vec3 n = glm::normalize(Vec3{u(rng), u(rng), u(rng)});
         const double e = 0.5 * (u(rng) + 1), mu = trial % 2 ? 10.0 : 0.2 * (u(rng) + 1);
         const ImpulseResult r = sphere_impulse(a, b, n, e, mu, true);
@@ -120,14 +122,14 @@ TEST(CollisionImpulse, MomentumKeptEnergyNotGainedSlidingStopped) {
         const Vec3 p_after = a.mass * (a.velocity + r.dv_a) + b.mass * (b.velocity + r.dv_b);
         EXPECT_LT(glm::length(p_after - p_before), 1e-14);
         auto energy = [](const Body& x, const Vec3& dv, const Vec3& dw) {
-            return kinetic_energy(x.mass, x.velocity + dv) + spin_energy(x.mass, x.radius, x.inertia, x.spin + dw);
+            return kinetic_energy(x.mass, x.velocity + dv) + 0.5 * x.moment * glm::dot(x.spin + dw, x.spin + dw);
         };
         const double before = energy(a, {}, {}) + energy(b, {}, {});
         const double after = energy(a, r.dv_a, r.dw_a) + energy(b, r.dv_b, r.dw_b);
         EXPECT_LE(after, before * (1 + 1e-13));
         // Separating at e times the approach speed along n.
-        const Body a2{a.velocity + r.dv_a, a.spin + r.dw_a, a.mass, a.radius, a.inertia};
-        const Body b2{b.velocity + r.dv_b, b.spin + r.dw_b, b.mass, b.radius, b.inertia};
+        const Body a2{a.velocity + r.dv_a, a.spin + r.dw_a, a.mass, a.radius, a.moment};
+        const Body b2{b.velocity + r.dv_b, b.spin + r.dw_b, b.mass, b.radius, b.moment};
         const Vec3 u0 = contact_velocity(a, b, n, true), u1 = contact_velocity(a2, b2, n, true);
         EXPECT_NEAR(glm::dot(u1, n), -e * glm::dot(u0, n), 1e-12);
         // Coulomb: either the slip stops (stick), or the friction impulse is mu J_n and the slip

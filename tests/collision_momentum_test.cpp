@@ -28,7 +28,7 @@ TEST(CollisionMomentum, KeptToRoundOffOverAMillionCollisions) {
     for (std::size_t i = 0; i < n; ++i) {
         s.set_position(i, {pos(rng), pos(rng), pos(rng)});
         s.set_velocity(i, {vel(rng), vel(rng), vel(rng)});
-        s.mass[i] = mass(rng);
+        s.mass[i] = s.inertial_mass[i] = mass(rng);  // no added mass
         s.radius[i] = radius;
         s.inertia[i] = 0.4;
     }

@@ -1,5 +1,5 @@
 // Particle-particle collisions (physics/collide/) against closed forms: 1D impacts with any
-// restitution, the equal-mass elastic glancing impact (paths at 90 degrees), Newton's cradle, a
+// restitution (with bare masses and with added mass), the equal-mass elastic glancing impact (paths at 90 degrees), Newton's cradle, a
 // head-on pair far faster than the step can resolve by overlap, and the off switch.
 #include "physics/collide/narrow_phase.hpp"
 #include "physics/stepping/energy.hpp"
@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace pl {
 namespace {
@@ -51,6 +52,31 @@ TEST(Collision, OneDimensionalImpactClosedForm) {
         const double lost = 0.5 * m1 * m2 / (m1 + m2) * (1 - e * e) * (v1 - v2) * (v1 - v2);
         EXPECT_NEAR(-en.collision_work, lost, 1e-12) << "e = " << e;
         EXPECT_NEAR(en.residual(), 0.0, 1e-12);
+    }
+}
+
+TEST(Collision, ImpactWithAddedMassUsesTheInertialMasses) {
+    // Balls in a dense fluid (rho = 1000 kg/m^3) carry M = m + 1/2 rho V along: the impact is the
+    // closed form above with M for m, M v is conserved, and the ledger (kinetic energy 1/2 M v^2)
+    // closes. With the bare masses the second ball would leave at 1.29 m/s instead of 1.44.
+    const double m1 = 0.2, m2 = 0.5, v1 = 3.0, v2 = -1.0, r1 = 0.04, r2 = 0.05, rho = 1000.0;
+    const double big1 = m1 + 0.5 * rho * (4.0 / 3.0) * std::numbers::pi * r1 * r1 * r1;
+    const double big2 = m2 + 0.5 * rho * (4.0 / 3.0) * std::numbers::pi * r2 * r2 * r2;
+    for (const double e : {1.0, 0.6}) {
+        Model m = free_space(e);
+        m.world.air.density_kg_m3 = rho;
+        m.world.added_mass = true;
+        Simulation sim(m, {ball({-1, 0, 0}, {v1, 0, 0}, m1, r1), ball({1, 0, 0}, {v2, 0, 0}, m2, r2)});
+        sim.run_until(1.0);
+        const double u1 = ((big1 - e * big2) * v1 + (1 + e) * big2 * v2) / (big1 + big2);
+        const double u2 = ((big2 - e * big1) * v2 + (1 + e) * big1 * v1) / (big1 + big2);
+        EXPECT_NEAR(sim.state().vx[0], u1, 1e-12) << "e = " << e;
+        EXPECT_NEAR(sim.state().vx[1], u2, 1e-12) << "e = " << e;
+        EXPECT_NEAR(big1 * sim.state().vx[0] + big2 * sim.state().vx[1], big1 * v1 + big2 * v2, 1e-13);
+        const EnergyBreakdown en = total_energy(sim.state(), sim.model().world.gravity, sim.model().room);
+        const double lost = 0.5 * big1 * big2 / (big1 + big2) * (1 - e * e) * (v1 - v2) * (v1 - v2);
+        EXPECT_NEAR(-en.collision_work, lost, 1e-12) << "e = " << e;
+        EXPECT_NEAR(en.residual(), 0.0, 1e-12) << "e = " << e;
     }
 }
 

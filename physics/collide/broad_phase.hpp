@@ -2,13 +2,18 @@
 // axis-aligned box around the sphere over one step, from its start to its end position) overlap.
 //
 // A uniform grid, rebuilt each step: each box is entered in every cell it overlaps, the entries
-// are radix-sorted by the cells' linear index (x + X y + X Y z), and a pair is tested only among
-// the entries of one cell, and reported only by the cell that holds the low corner of the two
+// are sorted by the cells' linear index (x + X y + X Y z), and a pair is tested only among the
+// entries of one cell, and reported only by the cell that holds the low corner of the two
 // boxes' intersection, so it is met once (Ericson, "Real-Time Collision Detection", 2005,
 // sec. 7.1-7.2; Le Grand, "Broad-Phase Collision Detection with CUDA", GPU Gems 3, ch. 32, 2007:
-// cell entries, a sort, and the "home cell" rule). Nothing is looked up around a particle and
-// every pass streams through memory: the cost is a few sequential passes per particle, with no
-// hash-table misses, at any n.
+// cell entries, a sort, and the "home cell" rule). Nothing is looked up around a particle: the
+// cost is a few passes per particle, with no hash-table misses, at any n.
+//
+// The sort is a counting sort: one pass when the cells are not many more than the boxes (a gas,
+// a pile), else LSD radix passes of 11-bit digits. The boxes are entered in the order of the last
+// call's cells (a particle moves a fraction of a cell in a step), so the pass writes the entries
+// almost in sequence instead of scattering them over memory; only the boxes are read out of
+// order (one 48-byte box per particle, fetched ahead).
 //
 // The cell is a power of two times the median box, chosen from the last call's mean entries per
 // cell: a dilute gas gets cells several boxes wide (about one entry per particle and per cell), a

@@ -22,12 +22,14 @@ void for_ranges(std::size_t n, std::size_t threads, Body&& body) {
     ThreadPool::shared().run(tasks, threads, task);
 }
 
+// The inertial mass M (m with added mass off): the impulses move what the forces move, and the
+// ledger's kinetic energy is 1/2 M v^2.
 Body body_of(const ParticleState& s, std::uint32_t i) {
-    return {s.velocity(i), s.spin(i), s.mass[i], s.radius[i], s.inertia[i]};
+    return {s.velocity(i), s.spin(i), s.inertial_mass[i], s.radius[i], s.inertia[i] * s.mass[i] * s.radius[i] * s.radius[i]};
 }
 
 double motion_energy(const ParticleState& s, std::uint32_t i) {
-    return kinetic_energy(s.mass[i], s.velocity(i)) + spin_energy(s.mass[i], s.radius[i], s.inertia[i], s.spin(i));
+    return kinetic_energy(s.inertial_mass[i], s.velocity(i)) + spin_energy(s.mass[i], s.radius[i], s.inertia[i], s.spin(i));
 }
 
 // Moves particle i to x; the potential energy that gives it is the contacts' work.
@@ -127,7 +129,7 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
         const double len = glm::length(d);
         const double overlap = contact - len - allowed_overlap * contact;
         if (!(overlap > 0.0) || !(len > 0.0)) continue;
-        const double inv_a = 1.0 / s.mass[p.a], inv_b = 1.0 / s.mass[p.b];
+        const double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
         const double correction = std::min(correction_share * overlap, max_correction * contact);
         const Vec3 push = (correction / (len * (inv_a + inv_b))) * d;
         move_to(s, m, p.a, s.position(p.a) - inv_a * push);
@@ -165,7 +167,7 @@ void CollisionPass::keep_rest_on_walls(ParticleState& s, double impact) {
                 s.resting[i] &= static_cast<std::uint8_t>(~(1u << w));
             } else if (away != 0.0) {
                 s.set_velocity(i, v - away * n);
-                if (!s.collision_work.empty()) s.collision_work[i] -= 0.5 * s.mass[i] * away * away;
+                if (!s.collision_work.empty()) s.collision_work[i] -= 0.5 * s.inertial_mass[i] * away * away;
             }
         }
     }

@@ -55,9 +55,11 @@ bool ContactSolver::pair_contact(const ParticleState& s, const Model& m, const P
     c.b = p.b;
     c.n = n;
     c.least_un = least_normal_velocity(gap, closing, h, impact);
-    const double inv_a = 1.0 / s.mass[p.a], inv_b = 1.0 / s.mass[p.b];
+    // The inertial masses M move (added mass: the fluid too); the spin's moment is k m r^2.
+    const double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
     c.normal_mass = 1.0 / (inv_a + inv_b);
-    c.tangent_mass = 1.0 / (inv_a + inv_b + (spin ? inv_a / s.inertia[p.a] + inv_b / s.inertia[p.b] : 0.0));
+    c.tangent_mass = 1.0 / (inv_a + inv_b +
+                            (spin ? 1.0 / (s.inertia[p.a] * s.mass[p.a]) + 1.0 / (s.inertia[p.b] * s.mass[p.b]) : 0.0));
     c.friction = m.collisions.friction;
     c.active = !(asleep[p.a] && asleep[p.b]);
     return true;
@@ -123,8 +125,8 @@ void ContactSolver::wall_contacts(const ParticleState& s, const Model& m, std::u
         c.wall = static_cast<std::uint8_t>(w);
         c.n = -inward;  // from the particle into the wall
         c.least_un = least_normal_velocity(gap, closing, h, impact);
-        c.normal_mass = s.mass[i];
-        c.tangent_mass = 1.0 / (1.0 / s.mass[i] + (spin ? 1.0 / (s.inertia[i] * s.mass[i]) : 0.0));
+        c.normal_mass = s.inertial_mass[i];
+        c.tangent_mass = 1.0 / (1.0 / s.inertial_mass[i] + (spin ? 1.0 / (s.inertia[i] * s.mass[i]) : 0.0));
         c.friction = m.contact.friction;
         c.active = !asleep[i];
     }
@@ -167,7 +169,7 @@ void ContactSolver::load_bodies(const ParticleState& s) {
     for (std::uint32_t k = 0; k < bodies_.size(); ++k) {
         const std::uint32_t i = bodies_[k];
         slot_of_[i] = k;
-        body_[k] = {s.velocity(i), s.spin(i), s.mass[i], s.radius[i], inverse_inertia(s, i)};
+        body_[k] = {s.velocity(i), s.spin(i), s.inertial_mass[i], s.radius[i], inverse_inertia(s, i)};
         v0_[k] = body_[k].v;
         w0_[k] = body_[k].w;
     }
@@ -287,7 +289,7 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
         const Vec3 dv = s.velocity(i) - v0_[k], dw = s.spin(i) - w0_[k];
         s.set_position(i, s.position(i) + h * dv);
         if (s.collision_work.empty()) continue;
-        const double mi = s.mass[i], moment = s.inertia[i] * mi * s.radius[i] * s.radius[i];
+        const double mi = s.inertial_mass[i], moment = s.inertia[i] * s.mass[i] * s.radius[i] * s.radius[i];
         // Without spin dw = 0 and start_spin is not kept (the term is zero).
         s.collision_work[i] += mi * glm::dot(dv, 0.5 * (start_velocity[i] + s.velocity(i))) +
                                (spin ? moment * glm::dot(dw, 0.5 * (start_spin[i] + s.spin(i))) : 0.0);

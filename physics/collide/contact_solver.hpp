@@ -42,7 +42,7 @@ struct SolverContact {
     std::uint8_t wall = 0;
     Vec3 n{0.0};
     double least_un = 0.0;   // m/s, the least normal relative velocity it may end with (<= 0)
-    double normal_mass = 0;  // 1 / (1/m_a + 1/m_b)
+    double normal_mass = 0;  // 1 / (1/M_a + 1/M_b), M the inertial mass (m, or m + added mass)
     double tangent_mass = 0; // 1 / K_t (with the spin's share where it matters)
     double friction = 0;
     double lambda_n = 0;     // accumulated normal impulse, N s (>= 0)
@@ -82,7 +82,7 @@ private:
     // one place (Box2D's solver bodies), so that a contact reads two slots, not eighteen arrays.
     struct Body {
         Vec3 v, w;
-        double mass, radius, inverse_moment;  // 1 / (k m r^2)
+        double mass, radius, inverse_moment;  // the inertial mass M; 1 / (k m r^2)
     };
     // The contact of a candidate pair, if its surfaces are close enough (false: none).
     static bool pair_contact(const ParticleState& s, const Model& m, const Pair& p, const std::vector<std::uint8_t>& asleep,

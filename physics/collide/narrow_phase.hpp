@@ -39,13 +39,16 @@ inline double time_of_impact(const Vec3& d, const Vec3& w, double contact_distan
     return s <= s_max ? s : -1.0;
 }
 
-// One sphere as the impulse sees it.
+// One sphere as the impulse sees it. With added mass (world.added_mass) `mass` is the inertial
+// mass M = m + 1/2 rho V: the fluid the sphere carries along is struck with it. The moment keeps
+// k m r^2: a sphere turning in an ideal fluid sets none of it moving (no added moment of
+// inertia; Lamb, Hydrodynamics, 1932, sec. 92).
 struct Body {
     Vec3 velocity;
     Vec3 spin;  // rad/s; used only when the spin takes part
     double mass = 1.0;
     double radius = 1.0;
-    double inertia = 0.4;  // k in I = k m r^2
+    double moment = 0.4;  // I = k m r^2, kg m^2
 };
 
 // The changes of velocity and spin of a and b, and the impulse on b (a gets its opposite).
@@ -75,7 +78,7 @@ inline ImpulseResult sphere_impulse(const Body& a, const Body& b, const Vec3& n,
     const double slide = glm::length(ut);
     if (friction > 0.0 && slide > 0.0) {
         double k_t = inv_a + inv_b;
-        if (with_spin) k_t += inv_a / a.inertia + inv_b / b.inertia;
+        if (with_spin) k_t += a.radius * a.radius / a.moment + b.radius * b.radius / b.moment;
         const double jt = std::min(friction * jn, slide / k_t);
         r.impulse -= (jt / slide) * ut;
     }
@@ -83,8 +86,8 @@ inline ImpulseResult sphere_impulse(const Body& a, const Body& b, const Vec3& n,
     r.dv_b = inv_b * r.impulse;
     if (with_spin) {
         // Angular impulse r x P about each centre: a's contact point is at +r_a n, b's at -r_b n.
-        r.dw_a = glm::cross(a.radius * n, -r.impulse) / (a.inertia * a.mass * a.radius * a.radius);
-        r.dw_b = glm::cross(-b.radius * n, r.impulse) / (b.inertia * b.mass * b.radius * b.radius);
+        r.dw_a = glm::cross(a.radius * n, -r.impulse) / a.moment;
+        r.dw_b = glm::cross(-b.radius * n, r.impulse) / b.moment;
     }
     r.applied = true;
     return r;
