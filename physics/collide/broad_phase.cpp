@@ -357,7 +357,8 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
     for (std::size_t t = 0; t < tasks; ++t) big_.insert(big_.end(), parts_[t].big.begin(), parts_[t].big.end());
     radix_sort(tasks);
     const std::size_t cells = scan(pairs, threads);  // sorted; the home cells' order made
-    order_.insert(order_.end(), big_.begin(), big_.end());    const auto from_grid = static_cast<std::ptrdiff_t>(pairs.size());
+    order_.insert(order_.end(), big_.begin(), big_.end());
+    const auto from_grid = static_cast<std::ptrdiff_t>(pairs.size());
     pair_big_ones(boxes, asleep, pairs);
     std::sort(pairs.begin() + from_grid, pairs.end());
     std::inplace_merge(pairs.begin(), pairs.begin() + from_grid, pairs.end());

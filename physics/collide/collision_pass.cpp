@@ -25,7 +25,7 @@ void for_ranges(std::size_t n, std::size_t threads, Body&& body) {
 // The inertial mass M (m with added mass off): the impulses move what the forces move, and the
 // ledger's kinetic energy is 1/2 M v^2.
 Body body_of(const ParticleState& s, std::uint32_t i) {
-    return {s.velocity(i), s.spin(i), s.inertial_mass[i], s.radius[i], s.inertia[i] * s.mass[i] * s.radius[i] * s.radius[i]};
+    return {s.velocity(i), s.spin(i), s.inertial_mass[i], s.radius[i], s.moment(i)};
 }
 
 double motion_energy(const ParticleState& s, std::uint32_t i) {

@@ -33,7 +33,7 @@ bool before(const SolverContact& x, const SolverContact& y) {
 }
 
 double inverse_inertia(const ParticleState& s, std::uint32_t i) {
-    return 1.0 / (s.inertia[i] * s.mass[i] * s.radius[i] * s.radius[i]);
+    return 1.0 / s.moment(i);
 }
 
 }  // namespace
@@ -289,7 +289,7 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
         const Vec3 dv = s.velocity(i) - v0_[k], dw = s.spin(i) - w0_[k];
         s.set_position(i, s.position(i) + h * dv);
         if (s.collision_work.empty()) continue;
-        const double mi = s.inertial_mass[i], moment = s.inertia[i] * s.mass[i] * s.radius[i] * s.radius[i];
+        const double mi = s.inertial_mass[i], moment = s.moment(i);
         // Without spin dw = 0 and start_spin is not kept (the term is zero).
         s.collision_work[i] += mi * glm::dot(dv, 0.5 * (start_velocity[i] + s.velocity(i))) +
                                (spin ? moment * glm::dot(dw, 0.5 * (start_spin[i] + s.spin(i))) : 0.0);

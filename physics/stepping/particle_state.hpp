@@ -60,6 +60,8 @@ struct ParticleState {
     void set_position(std::size_t i, const Vec3& p) { x[i] = p.x; y[i] = p.y; z[i] = p.z; }
     void set_velocity(std::size_t i, const Vec3& v) { vx[i] = v.x; vy[i] = v.y; vz[i] = v.z; }
     Vec3 spin(std::size_t i) const { return {wx[i], wy[i], wz[i]}; }
+    // I = k m R^2 (the bare mass: added mass does not turn with a sphere), kg m^2.
+    double moment(std::size_t i) const { return inertia[i] * mass[i] * radius[i] * radius[i]; }
     void set_spin(std::size_t i, const Vec3& w) { wx[i] = w.x; wy[i] = w.y; wz[i] = w.z; }
     void resize(std::size_t n);
 };
