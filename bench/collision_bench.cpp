@@ -6,6 +6,7 @@
 // and once it sleeps; on one and two threads; and the gas and the settling pile in Bullet (the
 // peer, peers/bullet_peer.hpp).
 #include "physics/collide/broad_phase.hpp"
+#include "physics/collide/collision_pass.hpp"
 #ifdef PL_HAS_BULLET
 #include "peers/bullet_peer.hpp"
 #endif
@@ -50,6 +51,14 @@ Gas dilute_gas(std::size_t n, bool collisions) {
     return g;
 }
 
+// How often the pair cache ran the grid, per step since the start.
+void count_grid_runs(benchmark::State& state, const Simulation& sim) {
+    if (const collide::CollisionPass* pass = sim.collision_pass(); pass && pass->pair_cache().calls() > 0)
+        state.counters["grid runs/step"] =
+            static_cast<double>(pass->pair_cache().grid_runs()) / static_cast<double>(pass->pair_cache().calls());
+    if (const collide::CollisionPass* pass = sim.collision_pass()) state.counters["margin"] = pass->pair_cache().margin();
+}
+
 void run_gas(benchmark::State& state, std::size_t n, bool collisions, int threads = 1) {
     const Gas g = dilute_gas(n, collisions);
     Simulation sim(g.model, g.particles);
@@ -59,6 +68,7 @@ void run_gas(benchmark::State& state, std::size_t n, bool collisions, int thread
     state.counters[rate_counter] =
         benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["collisions/step"] = static_cast<double>(sim.collisions_total()) / static_cast<double>(sim.step_count());
+    count_grid_runs(state, sim);
 }
 
 // The broad phase against the all-pairs loop on the gas's boxes (one step's motion).
@@ -143,6 +153,7 @@ void run_pile(benchmark::State& state, std::size_t n, double from, int threads =
         benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["asleep"] = static_cast<double>(sim.asleep_count()) / static_cast<double>(n);
     state.counters["contacts"] = static_cast<double>(sim.resting_contacts()) / static_cast<double>(n);
+    count_grid_runs(state, sim);
 }
 
 #ifdef PL_HAS_BULLET

@@ -73,6 +73,10 @@ void BroadPhase::choose_cell(const SweptBoxes& boxes, std::size_t tasks) {
             high[k] = std::max(high[k], parts_[t].high[k]);
         }
     }
+    for (int k = 0; k < 3; ++k) {  // the region of the boxes rounded out to floats (monotonic)
+        origin_[k] = below(origin_[k]);
+        high[k] = above(high[k]);
+    }
     cell_ = std::ldexp(sample_[sample_.size() / 2], scale_);  // > 0: every box holds a sphere
     size_grid(high, m);
 }
@@ -132,22 +136,21 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
         if (n + ahead < end) __builtin_prefetch(&box[order[n + ahead]]);
         const std::uint32_t i = order[n];
         const SweptBox& b = box[i];
+        // The box rounded out to floats decides everything here: its cells, and (in the scan)
+        // which cell reports a pair, from values that are the same in every cell.
+        float lo_f[3], hi_f[3];
         std::uint64_t lo[3], hi[3];
         for (int k = 0; k < 3; ++k) {
-            lo[k] = coordinate(b.lo[k], k);
-            hi[k] = coordinate(b.hi[k], k);
+            lo_f[k] = below(b.lo[k]);
+            hi_f[k] = above(b.hi[k]);
+            lo[k] = coordinate(lo_f[k], k);
+            hi[k] = coordinate(hi_f[k], k);
         }
         if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > max_cells) {
             part.big.push_back(i);
             continue;
         }
         const std::uint32_t id = i | (asleep && asleep[i] ? 0u : awake_bit);
-        float lo_f[3], hi_f[3];
-        for (int k = 0; k < 3; ++k) {
-            lo_f[k] = below(b.lo[k]);
-            hi_f[k] = above(b.hi[k]);
-        }
-        std::uint32_t home = home_bit;  // the first cell entered is the low corner's
         for (std::uint64_t z = lo[2]; z <= hi[2]; ++z)
             for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
                 for (std::uint64_t x = lo[0]; x <= hi[0]; ++x) {
@@ -155,8 +158,8 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
                     Entry& e = part.entries.emplace_back();
                     e.cell = static_cast<std::uint32_t>(linear(x, y, z));
                     ++count[e.cell & digit_mask];
-                    e.id = id | home;
-                    home = 0;
+                    e.id = id | (x == lo[0] ? first_x_bit : 0u) | (y == lo[1] ? first_y_bit : 0u) |
+                           (z == lo[2] ? first_z_bit : 0u);
                     for (int k = 0; k < 3; ++k) {
                         e.lo[k] = lo_f[k];
                         e.hi[k] = hi_f[k];
@@ -230,24 +233,26 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
         for (; run_end < end && entries_[run_end].cell == cell; ++run_end) {
             const std::uint32_t id = entries_[run_end].id;
             awake |= id & awake_bit;
-            if (id & home_bit) homes.push_back(id & id_mask);
+            if ((id & home_bits) == home_bits) homes.push_back(id & id_mask);
         }
         for (std::size_t p = run; awake && p + 1 < run_end; ++p) {
             const Entry& ep = entries_[p];
             for (std::size_t q = p + 1; q < run_end; ++q) {
                 const Entry& eq = entries_[q];
-                if (!((ep.id | eq.id) & awake_bit) || ep.lo[0] > eq.hi[0] || eq.lo[0] > ep.hi[0] || ep.lo[1] > eq.hi[1] ||
-                    eq.lo[1] > ep.hi[1] || ep.lo[2] > eq.hi[2] || eq.lo[2] > ep.hi[2])
-                    continue;  // both asleep, or apart even in the rounded-out boxes
+                // The cell reports the pair when, along each axis, one of the two boxes starts
+                // in it: it is then the low corner of the cells they share, met once per pair.
+                const std::uint32_t both = ep.id | eq.id;
+                if ((both & (awake_bit | home_bits)) != (awake_bit | home_bits)) continue;  // or both asleep
+                if (ep.lo[0] > eq.hi[0] || eq.lo[0] > ep.hi[0] || ep.lo[1] > eq.hi[1] || eq.lo[1] > ep.hi[1] ||
+                    ep.lo[2] > eq.hi[2] || eq.lo[2] > ep.hi[2])
+                    continue;  // apart even in the rounded-out boxes
+                // The exact boxes, read once per pair (out of memory order): only here.
                 const std::uint32_t i = ep.id & id_mask, j = eq.id & id_mask;
                 const SweptBox &a = box[i], &b = box[j];
-                if (a.lo[0] > b.hi[0] || b.lo[0] > a.hi[0] || a.lo[1] > b.hi[1] || b.lo[1] > a.hi[1] ||
-                    a.lo[2] > b.hi[2] || b.lo[2] > a.hi[2])
+                if (exact_ && (a.lo[0] > b.hi[0] || b.lo[0] > a.hi[0] || a.lo[1] > b.hi[1] || b.lo[1] > a.hi[1] ||
+                               a.lo[2] > b.hi[2] || b.lo[2] > a.hi[2]))
                     continue;
-                const std::uint64_t home = linear(coordinate(std::max(a.lo[0], b.lo[0]), 0),
-                                                  coordinate(std::max(a.lo[1], b.lo[1]), 1),
-                                                  coordinate(std::max(a.lo[2], b.lo[2]), 2));
-                if (home == cell) pairs.push_back({std::min(i, j), std::max(i, j)});
+                pairs.push_back({std::min(i, j), std::max(i, j)});
             }
         }
         run = run_end;
@@ -340,13 +345,14 @@ void BroadPhase::merge_slices(std::vector<Pair>& pairs) {
 }
 
 void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
-                            std::size_t threads) {
+                            std::size_t threads, bool exact) {
+    exact_ = exact;
     pairs.clear();
     big_.clear();
     entry_count_ = 0;
     const std::size_t m = boxes.ids.size();
     if (m < 2) return;
-    if (boxes.ids.back() > id_mask) throw std::length_error("broad phase: a particle index of 2^30 or more");
+    if (boxes.ids.back() > id_mask) throw std::length_error("broad phase: a particle index of 2^28 or more");
     threads_ = threads;
     boxes_ = &boxes;
     reuse_or_reset_order(boxes);

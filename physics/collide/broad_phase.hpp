@@ -50,6 +50,9 @@ struct SweptBox {
 struct SweptBoxes {
     std::vector<SweptBox> box;
     std::vector<std::uint32_t> ids;
+    // The farthest any box's sphere moved along an axis over the step (0 when not known): sizes
+    // the margin of the pair cache (pair_cache.hpp).
+    double reach = 0.0;
 
     void resize(std::size_t n) { box.resize(n); }
     bool overlap(std::uint32_t i, std::uint32_t j) const {
@@ -70,8 +73,11 @@ public:
     // scans the cells in that many threads' share of slices (the pairs are sorted at the end, so
     // the result is the same on any number of threads; the cell size depends only on the calls
     // before, never on the threads).
+    // With `exact` false, the pairs are those whose boxes rounded out to floats overlap: a few
+    // more, for a caller that tests the exact boxes itself (the pair cache), and no box is read
+    // out of memory order in the scan.
     void find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep = nullptr,
-                    std::size_t threads = 1);
+                    std::size_t threads = 1, bool exact = true);
 
     double cell_size() const { return cell_; }             // of the last call
     std::size_t big_count() const { return big_.size(); }    // particles tested against all, last call
@@ -81,12 +87,15 @@ private:
     // A box entered in a cell, with the box in floats rounded outwards: a cell's entries are
     // tested from consecutive memory, and only the pairs that pass read their exact boxes.
     // 32 bytes: the sort moves little.
-    static constexpr std::uint32_t awake_bit = 0x80000000u;  // in Entry::id: the particle is awake
-    static constexpr std::uint32_t home_bit = 0x40000000u;   // in Entry::id: the cell of its low corner
-    static constexpr std::uint32_t id_mask = home_bit - 1;
+    // In Entry::id: the particle is awake; the box starts in this cell along x, y, z (all three:
+    // the cell of its low corner, its home).
+    static constexpr std::uint32_t awake_bit = 0x80000000u;
+    static constexpr std::uint32_t first_x_bit = 0x10000000u, first_y_bit = 0x20000000u, first_z_bit = 0x40000000u;
+    static constexpr std::uint32_t home_bits = first_x_bit | first_y_bit | first_z_bit;
+    static constexpr std::uint32_t id_mask = first_x_bit - 1;
     struct Entry {
         std::uint32_t cell;  // linear cell index
-        std::uint32_t id;    // the particle, with awake_bit and home_bit
+        std::uint32_t id;    // the particle, with awake_bit and the first_*_bits
         float lo[3], hi[3];
     };
     // One thread's share of the particles: the entries it made and the big ones it found.
@@ -127,6 +136,7 @@ private:
     std::vector<double> sample_;
     std::vector<std::uint32_t> big_;
     const SweptBoxes* boxes_ = nullptr;     // during a call
+    bool exact_ = true;                     // during a call
     // The ids in the order of their home cells at the last call, then the big ones: the next call
     // enters the boxes in this order (for the ids it was made from, `ordered_ids_`).
     std::vector<std::uint32_t> order_, ordered_ids_;

@@ -7,20 +7,11 @@
 #include "physics/stepping/thread_pool.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 namespace pl::collide {
 namespace {
-
-// Runs body(begin, end) over [0, n) in contiguous ranges on up to `threads` threads (each range
-// writes only its own particles, so the result does not depend on the threads).
-template <class Body>
-void for_ranges(std::size_t n, std::size_t threads, Body&& body) {
-    const std::size_t tasks = threads > 1 && n >= 8192 ? threads : 1;
-    if (tasks == 1) return body(std::size_t{0}, n);
-    auto task = [&](std::size_t k) { body(n * k / tasks, n * (k + 1) / tasks); };
-    ThreadPool::shared().run(tasks, threads, task);
-}
 
 // The inertial mass M (m with added mass off): the impulses move what the forces move, and the
 // ledger's kinetic energy is 1/2 M v^2.
@@ -51,7 +42,7 @@ void CollisionPass::begin_step(const ParticleState& s, const Model& m, std::size
     // The start of the step: positions (the swept boxes; sleepers go back there), velocities and,
     // in a scene with spin, spins (the contacts' work). Without spin the solver turns nothing.
     const bool spin = spin_matters(m);
-    for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t i = begin; i < end; ++i) {
             start_[i] = s.position(i);
             start_velocity_[i] = s.velocity(i);
@@ -62,16 +53,23 @@ void CollisionPass::begin_step(const ParticleState& s, const Model& m, std::size
 }
 
 void CollisionPass::build_boxes(const ParticleState& s, std::size_t threads) {
-    for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end) {
+    // The boxes, and the farthest any moved along an axis (a maximum per task, then over the
+    // tasks: the same on any number of threads).
+    task_reach_.assign(range_tasks(s.size(), threads), 0.0);
+    for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
+        double reach = 0.0;
         for (std::size_t i = begin; i < end; ++i) {
             const Vec3 stop = s.position(i);
             const double r = s.radius[i];
             for (int k = 0; k < 3; ++k) {
                 boxes_.box[i].lo[k] = std::min(start_[i][k], stop[k]) - r;
                 boxes_.box[i].hi[k] = std::max(start_[i][k], stop[k]) + r;
+                reach = std::max(reach, std::abs(stop[k] - start_[i][k]));
             }
         }
+        task_reach_[task] = reach;
     });
+    boxes_.reach = *std::max_element(task_reach_.begin(), task_reach_.end());
     boxes_.ids.clear();
     for (std::uint32_t i = 0; i < s.size(); ++i)
         if (!s.frozen[i]) boxes_.ids.push_back(i);
@@ -260,7 +258,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     // and a pile asleep costs no broad phase at all.
     const std::vector<std::uint8_t>& asleep = islands_.asleep();
     if (std::any_of(boxes_.ids.begin(), boxes_.ids.end(), [&](std::uint32_t i) { return !asleep[i]; }))
-        broad_.find_pairs(boxes_, pairs_, asleep.data(), threads);
+        pair_cache_.find_pairs(boxes_, pairs_, asleep.data(), threads);
     else
         pairs_.clear();
     const double impact = impact_speed(m, h);

@@ -17,7 +17,7 @@
 // collision work, so the energy ledger's residual is the stepping method's own error.
 #pragma once
 
-#include "physics/collide/broad_phase.hpp"
+#include "physics/collide/pair_cache.hpp"
 #include "physics/collide/contact_solver.hpp"
 #include "physics/collide/sleep_islands.hpp"
 #include "physics/model/scene.hpp"
@@ -62,7 +62,7 @@ public:
 
     const std::vector<std::uint32_t>& moved() const { return moved_; }
     const std::vector<Pair>& candidates() const { return pairs_; }
-    const BroadPhase& broad_phase() const { return broad_; }
+    const PairCache& pair_cache() const { return pair_cache_; }
     const std::vector<SolverContact>& contacts() const { return solver_.contacts(); }
     const std::vector<std::uint8_t>& asleep() const { return islands_.asleep(); }
     std::size_t asleep_count() const { return islands_.asleep_count(); }
@@ -96,7 +96,8 @@ private:
     std::vector<std::uint8_t> touched_;
     std::vector<std::uint32_t> moved_;
     SweptBoxes boxes_;
-    BroadPhase broad_;
+    std::vector<double> task_reach_;  // per task of build_boxes
+    PairCache pair_cache_;
     std::vector<Pair> pairs_;
     std::vector<Hit> hits_;
     // The impact passes: the pairs a pass searches (all, then those of the particles the last

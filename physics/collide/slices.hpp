@@ -9,6 +9,20 @@
 
 namespace pl::collide {
 
+// The tasks for_ranges splits n items into: one below 8192 items or on one thread.
+inline std::size_t range_tasks(std::size_t n, std::size_t threads) { return threads > 1 && n >= 8192 ? threads : 1; }
+
+// Runs body(begin, end, task) over [0, n) in range_tasks(n, threads) contiguous ranges (each
+// range writes only its own items, or its task's slot, so the result does not depend on the
+// threads).
+template <class Body>
+void for_ranges(std::size_t n, std::size_t threads, Body&& body) {
+    const std::size_t tasks = range_tasks(n, threads);
+    if (tasks == 1) return body(std::size_t{0}, n, std::size_t{0});
+    auto task = [&](std::size_t k) { body(n * k / tasks, n * (k + 1) / tasks, k); };
+    ThreadPool::shared().run(tasks, threads, task);
+}
+
 // Appends to `out` what scan(begin, end, buffer) appends over [0, count): in one go on one
 // thread or below `grain` items, else in 4 slices per thread, each into its own buffer of
 // `buffers`, joined in order (the same items in the same order on any number of threads).
