@@ -9,7 +9,7 @@
 // sleepers). The result is always the set of overlapping pairs the grid alone would give, sorted:
 // the cache changes the cost, never the pairs, on any number of threads.
 //
-// The margin is `steps_ahead` times the farthest a box moved in the step (`SweptBoxes::reach`):
+// The margin is `steps_ahead` (3) times the farthest a box moved in the step (`SweptBoxes::reach`):
 // the fastest particle stays inside for about that many steps. It is capped at a quarter of the
 // free space between boxes (the mean spacing (V/m)^(1/3) less the median box), so the fat boxes
 // of a dilute gas meet few others, and a pile's margin is about zero: a settling pile runs the
@@ -26,9 +26,9 @@ namespace pl::collide {
 
 class PairCache {
 public:
-    // The fat boxes cost the grid more the larger they are (more cells and pairs per box): on the
-    // gas bench, 4 steps ahead cost least (2 to 16 measured).
-    static constexpr double steps_ahead = 4.0;
+    // The fat boxes cost the grid more the larger they are (more entries and pairs per box): on
+    // the gas at 1e5, 2 to 4 steps ahead cost least (1 to 16 measured at dt 1 and 2 ms).
+    static constexpr double steps_ahead = 3.0;
     static constexpr std::uint64_t quiet_calls = 16;  // calls without a margin after one wasted
 
     // Replaces `pairs` by every overlapping pair of `boxes.ids` (with `asleep`, not two sleeping
