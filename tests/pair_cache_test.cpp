@@ -152,6 +152,27 @@ TEST(PairCache, AJumpALeaverAndAWakerAreSeenAtOnce) {
     EXPECT_EQ(std::count(pairs.begin(), pairs.end(), sleepers), 1);
 }
 
+TEST(PairCache, ACrowdUnderAFarFastBallKeepsItsFatBoxesSmall) {
+    // 3000 balls crowded in a 0.3 m cube and one ball 100 m away moving 10 m a step: the mean
+    // spacing of the region is metres, the farthest move 10 m; the margin stays at most half
+    // the median box, so the crowd's fat pairs stay a few per ball (not millions).
+    Movers crowd(3001, 0.3, 0.5, 9);
+    crowd.step(1e-3, 0.3);
+    for (int k = 0; k < 3; ++k) {
+        crowd.boxes.box[3000].lo[k] = 100.0;
+        crowd.boxes.box[3000].hi[k] = 110.0;
+    }
+    crowd.boxes.reach = 10.0;
+    PairCache cache;
+    std::vector<Pair> pairs;
+    cache.find_pairs(crowd.boxes, pairs);
+    EXPECT_EQ(pairs, expected_pairs(crowd.boxes, {}));
+    EXPECT_GT(cache.margin(), 0.0);
+    EXPECT_LE(cache.margin(), 0.5 * 0.025) << "half the median box (about 2 radii plus the motion)";
+    EXPECT_LT(cache.fat_pair_count(), 20 * crowd.r.size());
+    EXPECT_GT(pairs.size(), 1000u);
+}
+
 TEST(PairCache, NoReachMeansNoMarginAndOnlyStillBoxesAreReused) {
     // Without a reach the fat boxes are the boxes: a call on the same boxes reuses the pairs, a
     // call on moved ones runs the grid.

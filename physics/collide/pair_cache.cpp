@@ -31,7 +31,7 @@ bool PairCache::still_holds(const SweptBoxes& boxes, const std::uint8_t* asleep,
 
 double PairCache::choose_margin(const SweptBoxes& boxes) {
     // steps_ahead times the farthest move of the step, at most a quarter of the free space
-    // between the boxes: the mean spacing (the boxes' region over their number, cube root) less
+    // between the boxes (and half the median box, below): the mean spacing (the boxes' region over their number, cube root) less
     // the median box (from an evenly strided sample: the same on every run).
     if (!(boxes.reach > 0.0)) return 0.0;
     const std::size_t m = boxes.ids.size(), stride = std::max<std::size_t>(1, m / 1024);
@@ -51,7 +51,10 @@ double PairCache::choose_margin(const SweptBoxes& boxes) {
     std::nth_element(sample_.begin(), middle, sample_.end());
     const double volume = (high[0] - low[0]) * (high[1] - low[1]) * (high[2] - low[2]);
     const double spacing = std::cbrt(volume / static_cast<double>(m));
-    const double cap = std::max(0.0, 0.25 * (spacing - *middle));  // 0 when not finite
+    // Also at most half the median box: where most boxes crowd into a small part of the region
+    // (a pile under one ball falling from a high ceiling) the mean spacing says nothing of them,
+    // and fat boxes twice their size still meet a bounded number of neighbours each.
+    const double cap = std::max(0.0, std::min(0.25 * (spacing - *middle), 0.5 * *middle));  // 0 if not finite
     return std::min(steps_ahead * boxes.reach, cap);
 }
 

@@ -11,9 +11,11 @@
 //
 // The margin is `steps_ahead` (3) times the farthest a box moved in the step (`SweptBoxes::reach`):
 // the fastest particle stays inside for about that many steps. It is capped at a quarter of the
-// free space between boxes (the mean spacing (V/m)^(1/3) less the median box), so the fat boxes
-// of a dilute gas meet few others, and a pile's margin is about zero: a settling pile runs the
-// grid each step, a sleeping one never.
+// free space between boxes (the mean spacing (V/m)^(1/3) less the median box) and at half the
+// median box, so the fat boxes of a dilute gas meet few others, a crowd's fat boxes a bounded
+// number, and a pile's margin is about zero. Fat boxes that serve only the call that made them
+// (some ball of a settling pile always leaves) are not made for the next `quiet_calls` calls: a
+// settling pile runs the plain grid, a sleeping one none.
 #pragma once
 
 #include "physics/collide/broad_phase.hpp"
