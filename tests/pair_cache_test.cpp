@@ -155,7 +155,8 @@ TEST(PairCache, AJumpALeaverAndAWakerAreSeenAtOnce) {
 TEST(PairCache, ACrowdUnderAFarFastBallKeepsItsFatBoxesSmall) {
     // 3000 balls crowded in a 0.3 m cube and one ball 100 m away moving 10 m a step: the mean
     // spacing of the region is metres, the farthest move 10 m; the margin stays at most half
-    // the median box, so the crowd's fat pairs stay a few per ball (not millions).
+    // the median box, so the crowd's fat pairs stay a few per ball (not millions), and then
+    // none: a crowd gets no margin.
     Movers crowd(3001, 0.3, 0.5, 9);
     crowd.step(1e-3, 0.3);
     for (int k = 0; k < 3; ++k) {
@@ -171,6 +172,20 @@ TEST(PairCache, ACrowdUnderAFarFastBallKeepsItsFatBoxesSmall) {
     EXPECT_LE(cache.margin(), 0.5 * 0.025) << "half the median box (about 2 radii plus the motion)";
     EXPECT_LT(cache.fat_pair_count(), 20 * crowd.r.size());
     EXPECT_GT(pairs.size(), 1000u);
+    // More than one fat pair per ball: a crowd, where testing them each step costs what the grid
+    // does. A call on the same boxes reuses them; then the far ball moves on (out of its fat
+    // box): the grid runs again, without a margin.
+    EXPECT_GT(cache.fat_pair_count(), crowd.r.size());
+    cache.find_pairs(crowd.boxes, pairs);
+    EXPECT_EQ(cache.grid_runs(), 1u);
+    for (int k = 0; k < 3; ++k) {
+        crowd.boxes.box[3000].lo[k] = 110.0;
+        crowd.boxes.box[3000].hi[k] = 120.0;
+    }
+    cache.find_pairs(crowd.boxes, pairs);
+    EXPECT_EQ(pairs, expected_pairs(crowd.boxes, {}));
+    EXPECT_EQ(cache.grid_runs(), 2u);
+    EXPECT_EQ(cache.margin(), 0.0);
 }
 
 TEST(PairCache, NoReachMeansNoMarginAndOnlyStillBoxesAreReused) {

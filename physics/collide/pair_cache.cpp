@@ -111,6 +111,10 @@ void PairCache::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, co
     // With a margin the fat pairs need not be exact (each call tests the exact boxes).
     grid_.find_pairs(fat_, fat_pairs_, asleep, threads, margin_ == 0.0);
     valid_ = true;
+    // A crowd (a pile): a fat pair or more per box, and testing them each step costs about what
+    // the grid does: no margin for a while.
+    if (margin_ > 0.0 && static_cast<double>(fat_pairs_.size()) > most_fat_pairs_per_box * static_cast<double>(boxes.ids.size()))
+        quiet_until_ = calls_ + quiet_calls;
     if (margin_ > 0.0) return test_fat_pairs(boxes, pairs, asleep, threads);
     pairs = fat_pairs_;  // still boxes, no margin: these are the pairs
 }

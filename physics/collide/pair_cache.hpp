@@ -13,9 +13,10 @@
 // the fastest particle stays inside for about that many steps. It is capped at a quarter of the
 // free space between boxes (the mean spacing (V/m)^(1/3) less the median box) and at half the
 // median box, so the fat boxes of a dilute gas meet few others, a crowd's fat boxes a bounded
-// number, and a pile's margin is about zero. Fat boxes that serve only the call that made them
-// (some ball of a settling pile always leaves) are not made for the next `quiet_calls` calls: a
-// settling pile runs the plain grid, a sleeping one none.
+// number. Fat boxes are not made for the next `quiet_calls` calls when they served only the call
+// that made them (some ball of a settling pile always leaves), or when they made more than one
+// fat pair per box (a crowd: testing those each step costs about what the grid does). A settling
+// pile runs the plain grid, a sleeping one none.
 #pragma once
 
 #include "physics/collide/broad_phase.hpp"
@@ -31,7 +32,8 @@ public:
     // The fat boxes cost the grid more the larger they are (more entries and pairs per box): on
     // the gas at 1e5, 2 to 4 steps ahead cost least (1 to 16 measured at dt 1 and 2 ms).
     static constexpr double steps_ahead = 3.0;
-    static constexpr std::uint64_t quiet_calls = 16;  // calls without a margin after one wasted
+    static constexpr std::uint64_t quiet_calls = 16;       // calls without a margin after one wasted
+    static constexpr double most_fat_pairs_per_box = 1.0;  // more: a crowd, no margin (the gas: 0.3)
 
     // Replaces `pairs` by every overlapping pair of `boxes.ids` (with `asleep`, not two sleeping
     // ones), sorted: what BroadPhase::find_pairs gives.
