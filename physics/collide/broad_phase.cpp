@@ -1,5 +1,6 @@
 #include "physics/collide/broad_phase.hpp"
 
+#include "physics/collide/slices.hpp"
 #include "physics/stepping/thread_pool.hpp"
 
 #include <algorithm>
@@ -39,46 +40,52 @@ std::uint64_t BroadPhase::coordinate(double x, int axis) const {
     return static_cast<std::uint64_t>(static_cast<std::int64_t>((x - origin_[axis]) * inverse_cell_));
 }
 
-void BroadPhase::choose_cell(const SweptBoxes& boxes, std::size_t tasks) {
-    // The median box (from an evenly strided sample of at most 1024 boxes: the same on every run)
-    // and the region all boxes take.
+BoxSpread spread_of(const SweptBoxes& boxes, std::size_t threads) {
     const std::size_t m = boxes.ids.size(), stride = std::max<std::size_t>(1, m / 1024);
-    sample_.clear();
-    for (std::size_t k = 0; k < m; k += stride) sample_.push_back(boxes.extent(boxes.ids[k]));
-    std::nth_element(sample_.begin(), sample_.begin() + static_cast<std::ptrdiff_t>(sample_.size() / 2), sample_.end());
-    run(tasks, [&](std::size_t t) {
-        Part& part = parts_[t];
+    std::vector<double> sample;
+    sample.reserve(m / stride + 1);
+    for (std::size_t k = 0; k < m; k += stride) sample.push_back(boxes.extent(boxes.ids[k]));
+    const auto middle = sample.begin() + static_cast<std::ptrdiff_t>(sample.size() / 2);
+    std::nth_element(sample.begin(), middle, sample.end());
+    std::vector<BoxSpread> parts(range_tasks(m, threads));
+    for_ranges(m, threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
         const SweptBox* box = boxes.box.data();
-        double low[3], top[3];  // locals: kept in registers
+        double low[3], high[3];  // locals: kept in registers
         for (int k = 0; k < 3; ++k) {
-            low[k] = box[boxes.ids[0]].lo[k];
-            top[k] = box[boxes.ids[0]].hi[k];
+            low[k] = box[boxes.ids[begin]].lo[k];
+            high[k] = box[boxes.ids[begin]].hi[k];
         }
-        for (std::size_t n = m * t / tasks; n < m * (t + 1) / tasks; ++n)
+        for (std::size_t n = begin; n < end; ++n)
             for (int k = 0; k < 3; ++k) {
                 low[k] = std::min(low[k], box[boxes.ids[n]].lo[k]);
-                top[k] = std::max(top[k], box[boxes.ids[n]].hi[k]);
+                high[k] = std::max(high[k], box[boxes.ids[n]].hi[k]);
             }
         for (int k = 0; k < 3; ++k) {
-            part.low[k] = low[k];
-            part.high[k] = top[k];
+            parts[task].low[k] = low[k];
+            parts[task].high[k] = high[k];
         }
     });
+    BoxSpread spread = parts[0];
+    for (const BoxSpread& part : parts)
+        for (int k = 0; k < 3; ++k) {
+            spread.low[k] = std::min(spread.low[k], part.low[k]);
+            spread.high[k] = std::max(spread.high[k], part.high[k]);
+        }
+    spread.median = *middle;
+    return spread;
+}
+
+void BroadPhase::choose_cell(const SweptBoxes& boxes, std::size_t threads) {
+    // The region of the boxes rounded out to floats (monotonic), and a cell 2^scale_ times the
+    // median box (> 0: every box holds a sphere).
+    const BoxSpread spread = spread_of(boxes, threads);
     double high[3];
     for (int k = 0; k < 3; ++k) {
-        origin_[k] = parts_[0].low[k];
-        high[k] = parts_[0].high[k];
-        for (std::size_t t = 1; t < tasks; ++t) {
-            origin_[k] = std::min(origin_[k], parts_[t].low[k]);
-            high[k] = std::max(high[k], parts_[t].high[k]);
-        }
+        origin_[k] = below(spread.low[k]);
+        high[k] = above(spread.high[k]);
     }
-    for (int k = 0; k < 3; ++k) {  // the region of the boxes rounded out to floats (monotonic)
-        origin_[k] = below(origin_[k]);
-        high[k] = above(high[k]);
-    }
-    cell_ = std::ldexp(sample_[sample_.size() / 2], scale_);  // > 0: every box holds a sphere
-    size_grid(high, m);
+    cell_ = std::ldexp(spread.median, scale_);
+    size_grid(high, boxes.ids.size());
 }
 
 void BroadPhase::size_grid(const double (&high)[3], std::size_t boxes) {
@@ -360,7 +367,7 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
     reuse_or_reset_order(boxes);
     const std::size_t tasks = threads > 1 && m >= 8192 ? threads : 1;
     if (parts_.size() < tasks) parts_.resize(tasks);
-    choose_cell(boxes, tasks);
+    choose_cell(boxes, threads);
     run(tasks, [&](std::size_t t) { enter_boxes(boxes, asleep, m * t / tasks, m * (t + 1) / tasks, parts_[t]); });
     for (std::size_t t = 0; t < tasks; ++t) big_.insert(big_.end(), parts_[t].big.begin(), parts_[t].big.end());
     radix_sort(tasks);
@@ -371,6 +378,38 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
     std::sort(pairs.begin() + from_grid, pairs.end());
     std::inplace_merge(pairs.begin(), pairs.begin() + from_grid, pairs.end());
     adapt_cell(cells);
+}
+
+bool BroadPhase::near(const SweptBox& box, std::vector<std::uint32_t>& out) const {
+    // The cells of the box clamped to the grid (every entered box lies inside it), each cell's
+    // entries found by a binary search in the sorted entries: a few cells, each a short run.
+    const std::uint64_t dims[3] = {stride_y_, stride_z_ / stride_y_, cell_count_ / stride_z_};
+    float lo_f[3], hi_f[3];
+    std::uint64_t lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+        lo_f[k] = below(box.lo[k]);
+        hi_f[k] = above(box.hi[k]);
+        const double top = static_cast<double>(dims[k] - 1);
+        const double from = std::clamp((lo_f[k] - origin_[k]) * inverse_cell_, 0.0, top);
+        const double to = std::clamp((hi_f[k] - origin_[k]) * inverse_cell_, 0.0, top);
+        if (!(from <= to)) return false;  // not finite
+        lo[k] = static_cast<std::uint64_t>(from);
+        hi[k] = static_cast<std::uint64_t>(to);
+    }
+    if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > max_cells) return false;
+    const Entry* const begin = entries_.data();
+    const Entry* const end = begin + entry_count_;
+    for (std::uint64_t z = lo[2]; z <= hi[2]; ++z)
+        for (std::uint64_t y = lo[1]; y <= hi[1]; ++y) {
+            const std::uint64_t first = linear(lo[0], y, z), last = linear(hi[0], y, z);
+            const Entry* e = std::lower_bound(begin, end, first, [](const Entry& a, std::uint64_t c) { return a.cell < c; });
+            for (; e != end && e->cell <= last; ++e)
+                if (e->lo[0] <= hi_f[0] && lo_f[0] <= e->hi[0] && e->lo[1] <= hi_f[1] && lo_f[1] <= e->hi[1] &&
+                    e->lo[2] <= hi_f[2] && lo_f[2] <= e->hi[2])
+                    out.push_back(e->id & id_mask);
+        }
+    out.insert(out.end(), big_.begin(), big_.end());
+    return true;
 }
 
 void all_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs) {

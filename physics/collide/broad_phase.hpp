@@ -53,8 +53,14 @@ struct SweptBoxes {
     // The farthest any box's sphere moved along an axis over the step (0 when not known): sizes
     // the margin of the pair cache (pair_cache.hpp).
     double reach = 0.0;
+    // Per particle index, the farthest its sphere moved along an axis over the step (empty: each
+    // moved `reach`): sizes each fat box of the pair cache.
+    std::vector<float> move;
 
-    void resize(std::size_t n) { box.resize(n); }
+    void resize(std::size_t n) {
+        box.resize(n);
+        move.resize(n);
+    }
     bool overlap(std::uint32_t i, std::uint32_t j) const {
         const SweptBox &a = box[i], &b = box[j];
         return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
@@ -62,6 +68,15 @@ struct SweptBoxes {
     }
     double extent(std::uint32_t i) const;  // the box's largest side
 };
+
+// The region the boxes of `ids` take (low and high corners) and their median extent, from an
+// evenly strided sample of at most 1024 boxes (the same on every run); the region on up to
+// `threads` threads. At least one id.
+struct BoxSpread {
+    double low[3], high[3];
+    double median;
+};
+BoxSpread spread_of(const SweptBoxes& boxes, std::size_t threads);
 
 class BroadPhase {
 public:
@@ -78,6 +93,13 @@ public:
     // out of memory order in the scan.
     void find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep = nullptr,
                     std::size_t threads = 1, bool exact = true);
+
+    // After a call: appends to `out` the particles of the last call whose box (rounded out to
+    // floats) meets `box` in a cell both take, or that were big (each may come more than once),
+    // and returns true; or returns false, appending nothing, when `box` would span more than
+    // max_cells cells of the last call's grid. The pair cache mends its pairs with it when a few
+    // boxes have moved (pair_cache.hpp).
+    bool near(const SweptBox& box, std::vector<std::uint32_t>& out) const;
 
     double cell_size() const { return cell_; }             // of the last call
     std::size_t big_count() const { return big_.size(); }    // particles tested against all, last call
@@ -103,13 +125,12 @@ private:
         std::vector<Entry> entries;
         std::vector<std::uint32_t> big;
         std::vector<std::uint32_t> count;  // radix sort histogram of its source
-        double low[3], high[3];
     };
     struct Source {
         const Entry* begin;
         const Entry* end;
     };
-    void choose_cell(const SweptBoxes& boxes, std::size_t tasks);
+    void choose_cell(const SweptBoxes& boxes, std::size_t threads);
     void size_grid(const double (&high)[3], std::size_t boxes);
     std::uint64_t coordinate(double x, int axis) const;
     std::uint64_t linear(std::uint64_t x, std::uint64_t y, std::uint64_t z) const { return x + stride_y_ * y + stride_z_ * z; }
@@ -133,7 +154,6 @@ private:
     std::uint64_t stride_y_ = 1, stride_z_ = 1, cell_count_ = 1;
     int passes_ = 1, digit_ = 1;  // of the radix sort: digits of digit_ bits
     std::size_t entry_count_ = 0;
-    std::vector<double> sample_;
     std::vector<std::uint32_t> big_;
     const SweptBoxes* boxes_ = nullptr;     // during a call
     bool exact_ = true;                     // during a call

@@ -61,11 +61,14 @@ void CollisionPass::build_boxes(const ParticleState& s, std::size_t threads) {
         for (std::size_t i = begin; i < end; ++i) {
             const Vec3 stop = s.position(i);
             const double r = s.radius[i];
+            double move = 0.0;
             for (int k = 0; k < 3; ++k) {
                 boxes_.box[i].lo[k] = std::min(start_[i][k], stop[k]) - r;
                 boxes_.box[i].hi[k] = std::max(start_[i][k], stop[k]) + r;
-                reach = std::max(reach, std::abs(stop[k] - start_[i][k]));
+                move = std::max(move, std::abs(stop[k] - start_[i][k]));
             }
+            boxes_.move[i] = static_cast<float>(move);
+            reach = std::max(reach, move);
         }
         task_reach_[task] = reach;
     });

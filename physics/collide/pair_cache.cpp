@@ -7,71 +7,146 @@
 
 namespace pl::collide {
 
-bool PairCache::still_holds(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads) {
+bool PairCache::find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads) {
+    // False when the fat boxes cannot serve at all; else leavers_ lists the boxes out of their
+    // fat boxes (each task's in index order, joined in task order).
     if (!valid_ || boxes.ids != fat_.ids || boxes.box.size() != fat_.box.size()) return false;
-    const std::size_t m = boxes.ids.size();
-    task_holds_.assign(range_tasks(m, threads), 1);
+    const std::size_t m = boxes.ids.size(), tasks = range_tasks(m, threads);
+    task_holds_.assign(tasks, 1);
+    task_leavers_.resize(tasks);
     for_ranges(m, threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
         const SweptBox* box = boxes.box.data();
         const SweptBox* fat = fat_.box.data();
+        std::vector<std::uint32_t>& out = task_leavers_[task];
+        out.clear();
         for (std::size_t n = begin; n < end; ++n) {
             const std::uint32_t i = boxes.ids[n];
             const SweptBox &b = box[i], &f = fat[i];
             const bool inside = b.lo[0] >= f.lo[0] && b.lo[1] >= f.lo[1] && b.lo[2] >= f.lo[2] && b.hi[0] <= f.hi[0] &&
                                 b.hi[1] <= f.hi[1] && b.hi[2] <= f.hi[2];
-            const bool woke = slept_[i] && !(asleep && asleep[i]);
-            if (!inside || woke) {
+            if (slept_[i] && !(asleep && asleep[i])) {  // woke: the grid left out its pairs with sleepers
                 task_holds_[task] = 0;
                 return;
             }
+            if (!inside) out.push_back(i);
         }
     });
-    return std::all_of(task_holds_.begin(), task_holds_.end(), [](std::uint8_t h) { return h != 0; });
+    leavers_.clear();
+    for (std::size_t t = 0; t < tasks; ++t) {
+        if (!task_holds_[t]) return false;
+        leavers_.insert(leavers_.end(), task_leavers_[t].begin(), task_leavers_[t].end());
+    }
+    return true;
 }
 
-double PairCache::choose_margin(const SweptBoxes& boxes) {
-    // steps_ahead times the farthest move of the step, at most a quarter of the free space
-    // between the boxes (and half the median box, below): the mean spacing (the boxes' region over their number, cube root) less
-    // the median box (from an evenly strided sample: the same on every run).
+double PairCache::choose_cap(const SweptBoxes& boxes, std::size_t threads) const {
+    // A quarter of the free space between the boxes: the mean spacing (the boxes' region over
+    // their number, cube root) less the median box. 0 when nothing moves.
     if (!(boxes.reach > 0.0)) return 0.0;
-    const std::size_t m = boxes.ids.size(), stride = std::max<std::size_t>(1, m / 1024);
-    double low[3], high[3];
+    const BoxSpread spread = spread_of(boxes, threads);
+    double volume = 1.0;
+    for (int k = 0; k < 3; ++k) volume *= spread.high[k] - spread.low[k];
+    const double spacing = std::cbrt(volume / static_cast<double>(boxes.ids.size()));
+    return std::max(0.0, 0.25 * (spacing - spread.median));  // 0 if not finite
+}
+
+double PairCache::margin_of(const SweptBoxes& boxes, std::uint32_t i) const {
+    // Its own move steps_ahead times over, at most the cap and its box's longest side (a crowd's
+    // fat boxes are at most three boxes wide, whatever one fast ball far away does).
+    return std::min({cap_, steps_ahead * static_cast<double>(boxes.move[i]), boxes.extent(i)});
+}
+
+SweptBox PairCache::fat_box(const SweptBoxes& boxes, std::uint32_t i) const {
+    const double margin = margin_of(boxes, i);
+    SweptBox f;
     for (int k = 0; k < 3; ++k) {
-        low[k] = boxes.box[boxes.ids[0]].lo[k];
-        high[k] = boxes.box[boxes.ids[0]].hi[k];
+        f.lo[k] = boxes.box[i].lo[k] - margin;
+        f.hi[k] = boxes.box[i].hi[k] + margin;
     }
-    for (const std::uint32_t i : boxes.ids)
-        for (int k = 0; k < 3; ++k) {
-            low[k] = std::min(low[k], boxes.box[i].lo[k]);
-            high[k] = std::max(high[k], boxes.box[i].hi[k]);
-        }
-    sample_.clear();
-    for (std::size_t n = 0; n < m; n += stride) sample_.push_back(boxes.extent(boxes.ids[n]));
-    const auto middle = sample_.begin() + static_cast<std::ptrdiff_t>(sample_.size() / 2);
-    std::nth_element(sample_.begin(), middle, sample_.end());
-    const double volume = (high[0] - low[0]) * (high[1] - low[1]) * (high[2] - low[2]);
-    const double spacing = std::cbrt(volume / static_cast<double>(m));
-    // Also at most half the median box: where most boxes crowd into a small part of the region
-    // (a pile under one ball falling from a high ceiling) the mean spacing says nothing of them,
-    // and fat boxes twice their size still meet a bounded number of neighbours each.
-    const double cap = std::max(0.0, std::min(0.25 * (spacing - *middle), 0.5 * *middle));  // 0 if not finite
-    return std::min(steps_ahead * boxes.reach, cap);
+    return f;
 }
 
 void PairCache::grow_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads) {
     fat_.box.resize(boxes.box.size());
     fat_.ids = boxes.ids;
     slept_.assign(boxes.box.size(), 0);
-    for_ranges(boxes.ids.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+    task_margin_.assign(range_tasks(boxes.ids.size(), threads), 0.0);
+    for_ranges(boxes.ids.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
+        double largest = 0.0;
         for (std::size_t n = begin; n < end; ++n) {
             const std::uint32_t i = boxes.ids[n];
-            for (int k = 0; k < 3; ++k) {
-                fat_.box[i].lo[k] = boxes.box[i].lo[k] - margin_;
-                fat_.box[i].hi[k] = boxes.box[i].hi[k] + margin_;
-            }
+            fat_.box[i] = fat_box(boxes, i);
+            largest = std::max(largest, margin_of(boxes, i));
             slept_[i] = asleep ? asleep[i] : 0;
         }
+        task_margin_[task] = largest;
     });
+    margin_ = *std::max_element(task_margin_.begin(), task_margin_.end());
+}
+
+bool PairCache::mend(const SweptBoxes& boxes) {
+    // The leavers' new fat boxes, and their fat pairs: with the boxes of the last grid run that
+    // have not moved since (through the grid), with the boxes mended since (which the grid holds
+    // stale) and with each other. Nothing changes unless every leaver's query succeeds. Leavers
+    // are awake: a sleeping particle is held where it slept.
+    const double m = static_cast<double>(boxes.ids.size()), leavers = static_cast<double>(leavers_.size());
+    const double mended = static_cast<double>(mended_.size());
+    if (leavers > most_leavers_share * m || mended + leavers > most_mended_share * m ||
+        leavers * (mended + leavers) > most_mend_tests_per_box * m)
+        return false;
+    for (const std::uint32_t i : leavers_) is_leaver_[i] = 1;
+    new_fat_.clear();
+    new_pairs_.clear();
+    bool found = true;
+    for (std::size_t l = 0; found && l < leavers_.size(); ++l) {
+        const std::uint32_t i = leavers_[l];
+        const SweptBox f = fat_box(boxes, i);
+        new_fat_.push_back(f);
+        near_.clear();
+        found = grid_.near(f, near_);
+        if (++query_ == 0) {  // the stamps wrapped around
+            std::fill(stamp_.begin(), stamp_.end(), 0u);
+            query_ = 1;
+        }
+        auto meet = [&](std::uint32_t j, const SweptBox& g) {
+            const bool apart = f.lo[0] > g.hi[0] || g.lo[0] > f.hi[0] || f.lo[1] > g.hi[1] || g.lo[1] > f.hi[1] ||
+                               f.lo[2] > g.hi[2] || g.lo[2] > f.hi[2];
+            if (!apart) new_pairs_.push_back({std::min(i, j), std::max(i, j)});
+        };
+        for (const std::uint32_t j : near_) {  // stale: the mended ones and the leavers
+            if (j == i || is_mended_[j] || is_leaver_[j] || stamp_[j] == query_) continue;
+            stamp_[j] = query_;
+            meet(j, fat_.box[j]);
+        }
+        for (const std::uint32_t j : mended_)
+            if (!is_leaver_[j]) meet(j, fat_.box[j]);
+        for (std::size_t k = 0; k < l; ++k) meet(leavers_[k], new_fat_[k]);
+    }
+    if (found) {
+        for (std::size_t l = 0; l < leavers_.size(); ++l) {
+            const std::uint32_t i = leavers_[l];
+            fat_.box[i] = new_fat_[l];
+            if (!is_mended_[i]) mended_.push_back(i);
+            is_mended_[i] = 1;
+        }
+        kept_pairs_.clear();
+        for (const Pair& p : fat_pairs_)
+            if (!is_leaver_[p.a] && !is_leaver_[p.b]) kept_pairs_.push_back(p);
+        std::sort(new_pairs_.begin(), new_pairs_.end());
+        fat_pairs_.resize(kept_pairs_.size() + new_pairs_.size());
+        std::merge(kept_pairs_.begin(), kept_pairs_.end(), new_pairs_.begin(), new_pairs_.end(), fat_pairs_.begin());
+        ++mends_;
+    }
+    for (const std::uint32_t i : leavers_) is_leaver_[i] = 0;
+    return found;
+}
+
+void PairCache::forget_mended() {
+    for (const std::uint32_t i : mended_) is_mended_[i] = 0;
+    mended_.clear();
+    is_mended_.resize(fat_.box.size(), 0);
+    is_leaver_.resize(fat_.box.size(), 0);
+    stamp_.resize(fat_.box.size(), 0);
 }
 
 void PairCache::test_fat_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
@@ -93,7 +168,7 @@ void PairCache::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, co
                            std::size_t threads) {
     ++calls_;
     pairs.clear();
-    if (still_holds(boxes, asleep, threads)) {
+    if (find_leavers(boxes, asleep, threads) && (leavers_.empty() || (margin_ > 0.0 && mend(boxes)))) {
         ++served_;
         return test_fat_pairs(boxes, pairs, asleep, threads);
     }
@@ -102,12 +177,14 @@ void PairCache::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, co
     if (margin_ > 0.0 && served_ < 2) quiet_until_ = calls_ + quiet_calls;
     served_ = 1;
     ++grid_runs_;
-    margin_ = calls_ < quiet_until_ || boxes.ids.size() < 2 ? 0.0 : choose_margin(boxes);
-    if (margin_ == 0.0 && boxes.reach > 0.0) {  // no margin, and boxes move: nothing worth keeping
+    cap_ = calls_ < quiet_until_ || boxes.ids.size() < 2 ? 0.0 : choose_cap(boxes, threads);
+    if (cap_ == 0.0 && boxes.reach > 0.0) {  // no margin, and boxes move: nothing worth keeping
         valid_ = false;
+        margin_ = 0.0;
         return grid_.find_pairs(boxes, pairs, asleep, threads);
     }
     grow_boxes(boxes, asleep, threads);
+    forget_mended();
     // With a margin the fat pairs need not be exact (each call tests the exact boxes).
     grid_.find_pairs(fat_, fat_pairs_, asleep, threads, margin_ == 0.0);
     valid_ = true;

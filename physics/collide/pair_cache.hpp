@@ -4,19 +4,25 @@
 // only tests their exact boxes. Verlet's neighbour list with a skin (L. Verlet, Phys. Rev. 159,
 // 98, 1967); the fat AABBs of Box2D's and Bullet's dynamic trees.
 //
-// The grid is run again when a box leaves its fat box, when the particles that take part change,
-// or when a particle that slept at the last run wakes (the grid leaves out pairs of two
-// sleepers). The result is always the set of overlapping pairs the grid alone would give, sorted:
-// the cache changes the cost, never the pairs, on any number of threads.
+// When a few boxes leave their fat boxes (a particle struck in a collision, a wall's bounce), their
+// pairs are mended instead: each gets a new fat box, its old fat pairs are dropped and its new
+// ones found through the last run's grid (and among the boxes mended since, which the grid holds
+// stale). The grid is run again when too many left (`most_leavers_share` of the boxes, or more
+// mended since the run than `most_mended_share`), when the particles that take part change, or
+// when a particle that slept at the last run wakes (the grid leaves out pairs of two sleepers).
+// The result is always the set of overlapping pairs the grid alone would give, sorted: the cache
+// changes the cost, never the pairs, on any number of threads.
 //
-// The margin is `steps_ahead` (3) times the farthest a box moved in the step (`SweptBoxes::reach`):
-// the fastest particle stays inside for about that many steps. It is capped at a quarter of the
-// free space between boxes (the mean spacing (V/m)^(1/3) less the median box) and at half the
-// median box, so the fat boxes of a dilute gas meet few others, a crowd's fat boxes a bounded
-// number. Fat boxes are not made for the next `quiet_calls` calls when they served only the call
-// that made them (some ball of a settling pile always leaves), or when they made more than one
-// fat pair per box (a crowd: testing those each step costs about what the grid does). A settling
-// pile runs the plain grid, a sleeping one none.
+// Each particle's margin is `steps_ahead` times its own farthest move along an axis in the step
+// (`SweptBoxes::move`): a particle on a straight path stays inside for that many steps, a slow one
+// gets a thin fat box, a fast one a wide one (a uniform margin sized by the fastest particle made
+// every fat box as wide as the fastest one's). It is capped at a quarter of the free space
+// between boxes (the mean spacing (V/m)^(1/3) less the median box) and at the box's own longest
+// side, so the fat boxes of a dilute gas meet few others, a crowd's fat boxes a bounded number.
+// Fat boxes are not made for the next `quiet_calls` calls when they served only the call that
+// made them (some ball of a settling pile always leaves), or when they made more than one fat
+// pair per box (a crowd: testing those each step costs about what the grid does). A settling pile
+// runs the plain grid, a sleeping one none.
 #pragma once
 
 #include "physics/collide/broad_phase.hpp"
@@ -29,9 +35,18 @@ namespace pl::collide {
 
 class PairCache {
 public:
-    // The fat boxes cost the grid more the larger they are (more entries and pairs per box): on
-    // the gas at 1e5, 2 to 4 steps ahead cost least (1 to 16 measured at dt 1 and 2 ms).
-    static constexpr double steps_ahead = 3.0;
+    // Half a step past a whole number: a particle on a straight path stays inside its fat box for
+    // the 6 steps after the grid run and is then clearly out (on a whole number it would end on
+    // the boundary, where round-off decides). On the gas at 1e5 (dt 1 and 2 ms) 6.5 cost less than 3, 3.5 and 4.5 (each
+    // particle's margin is also at most its box, so fast ones are mended earlier).
+    static constexpr double steps_ahead = 6.5;
+    // Mended rather than run again: at most this share of the boxes leaving in one call, and of
+    // the boxes mended since the grid ran.
+    static constexpr double most_leavers_share = 1.0 / 16.0;
+    static constexpr double most_mended_share = 1.0 / 8.0;
+    // ... and at most this many box tests per box of the leavers against the mended ones (each
+    // leaver tests every box mended since the run: a grid run costs some tens of tests a box).
+    static constexpr double most_mend_tests_per_box = 4.0;
     static constexpr std::uint64_t quiet_calls = 16;       // calls without a margin after one wasted
     static constexpr double most_fat_pairs_per_box = 1.0;  // more: a crowd, no margin (the gas: 0.3)
 
@@ -39,17 +54,21 @@ public:
     // ones), sorted: what BroadPhase::find_pairs gives.
     void find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep = nullptr,
                     std::size_t threads = 1);
-    void forget() { valid_ = false; }  // the next call runs the grid
 
     const BroadPhase& grid() const { return grid_; }
-    double margin() const { return margin_; }                       // of the last grid run
+    double margin() const { return margin_; }                       // the largest, of the last grid run
     std::size_t fat_pair_count() const { return fat_pairs_.size(); }  // pairs of fat boxes
     std::uint64_t calls() const { return calls_; }
     std::uint64_t grid_runs() const { return grid_runs_; }
+    std::uint64_t mends() const { return mends_; }  // calls that mended the fat pairs
 
 private:
-    bool still_holds(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads);
-    double choose_margin(const SweptBoxes& boxes);
+    bool find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads);
+    bool mend(const SweptBoxes& boxes);
+    double choose_cap(const SweptBoxes& boxes, std::size_t threads) const;
+    double margin_of(const SweptBoxes& boxes, std::uint32_t i) const;
+    SweptBox fat_box(const SweptBoxes& boxes, std::uint32_t i) const;
+    void forget_mended();
     void grow_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads);
     void test_fat_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
                         std::size_t threads);
@@ -60,10 +79,21 @@ private:
     std::vector<Pair> fat_pairs_;      // overlapping pairs of fat boxes, sorted
     std::vector<std::vector<Pair>> slice_pairs_;
     std::vector<std::uint8_t> task_holds_;
-    std::vector<double> sample_;
-    double margin_ = 0.0;
+    std::vector<double> task_margin_;
+    std::vector<std::vector<std::uint32_t>> task_leavers_;
+    std::vector<std::uint32_t> leavers_;  // boxes out of their fat boxes, this call, by index
+    // Mending: the boxes mended since the grid ran (their entries in the grid are stale), a flag
+    // per particle index for them and for this call's leavers, the particles a leaver's query
+    // met (a stamp per particle index against repeats), the new fat boxes and pairs.
+    std::vector<std::uint32_t> mended_, near_, stamp_;
+    std::vector<std::uint8_t> is_mended_, is_leaver_;
+    std::vector<SweptBox> new_fat_;
+    std::vector<Pair> new_pairs_, kept_pairs_;
+    std::uint32_t query_ = 0;
+    double cap_ = 0.0;     // the margins' cap at the last grid run (0: no margins)
+    double margin_ = 0.0;  // the largest margin at the last grid run
     bool valid_ = false;
-    std::uint64_t calls_ = 0, grid_runs_ = 0;
+    std::uint64_t calls_ = 0, grid_runs_ = 0, mends_ = 0;
     std::uint64_t served_ = 0;       // calls the fat boxes served (with the one that made them)
     std::uint64_t quiet_until_ = 0;  // no margin before this call
 };
