@@ -284,7 +284,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     // contact (a sleeping one touched by an awake one) is in moved_.
     for (const std::uint32_t i : moved_)
         if (islands_.asleep()[i]) islands_.wake(i);
-    islands_.update(s, solver_.contacts(), m.contact.rest_speed, h);
+    islands_.update(s, solver_.contacts(), m.contact.rest_speed, h, threads);
     return impacts;
 }
 

@@ -17,8 +17,8 @@
 // (`SweptBoxes::move`): a particle on a straight path stays inside for that many steps, a slow one
 // gets a thin fat box, a fast one a wide one (a uniform margin sized by the fastest particle made
 // every fat box as wide as the fastest one's). It is capped at a quarter of the free space
-// between boxes (the mean spacing (V/m)^(1/3) less the median box) and at the box's own longest
-// side, so the fat boxes of a dilute gas meet few others, a crowd's fat boxes a bounded number.
+// between boxes (the mean spacing (V/m)^(1/3) less the median box) and at twice the box's own
+// longest side, so the fat boxes of a dilute gas meet few others, a crowd's fat boxes a bounded number.
 // Fat boxes are not made for the next `quiet_calls` calls when they served only the call that
 // made them (some ball of a settling pile always leaves), or when they made more than one fat
 // pair per box (a crowd: testing those each step costs about what the grid does). A settling pile

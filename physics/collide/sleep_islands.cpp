@@ -1,5 +1,7 @@
 #include "physics/collide/sleep_islands.hpp"
 
+#include "physics/collide/slices.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -45,8 +47,36 @@ void SleepIslands::fall_asleep(const std::vector<std::uint32_t>& members) {
     asleep_count_ += members.size();
 }
 
+void SleepIslands::update_still(const ParticleState& s, double rest_speed, double h, std::size_t threads) {
+    // Still time: an awake particle out of every pair contact, or moving, starts again from zero.
+    // A particle resting on a wall and touching no other is an island of its own (a member, in
+    // index order after the contacts' members: each task's in order, joined in task order).
+    task_resting_.resize(range_tasks(s.size(), threads));
+    for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
+        std::vector<std::uint32_t>& resting = task_resting_[task];
+        resting.clear();
+        for (std::size_t n = begin; n < end; ++n) {
+            const auto i = static_cast<std::uint32_t>(n);
+            if (asleep_[i]) continue;
+            if (!in_contact_[i]) {
+                if (!s.resting[i] || s.frozen[i]) {
+                    still_[i] = 0.0;
+                    continue;
+                }
+                in_contact_[i] = 1;
+                resting.push_back(i);
+            }
+            const double surface = glm::length(s.spin(i)) * s.radius[i];
+            const bool still = rest_speed > 0.0 && glm::length(s.velocity(i)) < rest_speed && surface < rest_speed;
+            still_[i] = still ? still_[i] + h : 0.0;
+        }
+    });
+    for (const std::vector<std::uint32_t>& resting : task_resting_)
+        members_.insert(members_.end(), resting.begin(), resting.end());
+}
+
 void SleepIslands::update(const ParticleState& s, const std::vector<SolverContact>& contacts, double rest_speed,
-                          double h) {
+                          double h, std::size_t threads) {
     // (The islands touched by an awake particle, struck or kicked were woken before: wake().)
     for (const std::uint32_t i : members_) {
         in_contact_[i] = 0;
@@ -63,22 +93,7 @@ void SleepIslands::update(const ParticleState& s, const std::vector<SolverContac
         const std::uint32_t ra = root(c.a), rb = root(c.b);
         if (ra != rb) parent_[std::max(ra, rb)] = std::min(ra, rb);  // the smaller index is the root: order-free
     }
-    // Still time: an awake particle out of every pair contact, or moving, starts again from zero.
-    // A particle resting on a wall and touching no other is an island of its own.
-    for (std::uint32_t i = 0; i < s.size(); ++i) {
-        if (asleep_[i]) continue;
-        if (!in_contact_[i]) {
-            if (!s.resting[i] || s.frozen[i]) {
-                still_[i] = 0.0;
-                continue;
-            }
-            in_contact_[i] = 1;
-            members_.push_back(i);
-        }
-        const double surface = glm::length(s.spin(i)) * s.radius[i];
-        const bool still = rest_speed > 0.0 && glm::length(s.velocity(i)) < rest_speed && surface < rest_speed;
-        still_[i] = still ? still_[i] + h : 0.0;
-    }
+    update_still(s, rest_speed, h, threads);
     for (const std::uint32_t i : members_) island_still_[root(i)] = still_[i];
     for (const std::uint32_t i : members_) {
         double& least = island_still_[root(i)];

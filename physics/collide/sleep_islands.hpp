@@ -27,8 +27,10 @@ public:
 
     // After a step of length h, once the islands touched, struck or kicked have been woken
     // (wake): updates each awake particle's still time from its velocity and spin, and puts to
-    // sleep the islands still long enough. `rest_speed` <= 0: nothing sleeps.
-    void update(const ParticleState& s, const std::vector<SolverContact>& contacts, double rest_speed, double h);
+    // sleep the islands still long enough. `rest_speed` <= 0: nothing sleeps. The pass over the
+    // particles runs on up to `threads` threads (the same result on any number).
+    void update(const ParticleState& s, const std::vector<SolverContact>& contacts, double rest_speed, double h,
+                std::size_t threads = 1);
     // Wakes particle i's island now (its velocity was set from outside, or it was struck).
     void wake(std::uint32_t i);
 
@@ -37,6 +39,7 @@ public:
 
 private:
     std::uint32_t root(std::uint32_t i);
+    void update_still(const ParticleState& s, double rest_speed, double h, std::size_t threads);
     void wake_island(std::uint32_t i);
     void fall_asleep(const std::vector<std::uint32_t>& members);
 
@@ -50,6 +53,7 @@ private:
     static constexpr std::uint32_t none = 0xffffffffu;
     std::vector<std::uint32_t> head_, next_member_;  // per root: its island's particles, chained
     std::vector<std::uint32_t> island_;   // scratch: one island's particles
+    std::vector<std::vector<std::uint32_t>> task_resting_;  // per task: particles alone on a wall
     std::size_t asleep_count_ = 0;
 };
 
