@@ -50,12 +50,11 @@ struct SweptBox {
 struct SweptBoxes {
     std::vector<SweptBox> box;
     std::vector<std::uint32_t> ids;
-    // The farthest any box's sphere moved along an axis over the step (0 when not known): sizes
-    // the margin of the pair cache (pair_cache.hpp).
-    double reach = 0.0;
-    // Per particle index, the farthest its sphere moved along an axis over the step (empty: each
-    // moved `reach`): sizes each fat box of the pair cache.
+    // Per particle index, the farthest its sphere moved along an axis over the step (sized with
+    // the boxes by resize), and the largest of them (0: nothing moved): they size the pair
+    // cache's fat boxes (pair_cache.hpp).
     std::vector<float> move;
+    double reach = 0.0;
 
     void resize(std::size_t n) {
         box.resize(n);

@@ -4,11 +4,10 @@
 // only tests their exact boxes. Verlet's neighbour list with a skin (L. Verlet, Phys. Rev. 159,
 // 98, 1967); the fat AABBs of Box2D's and Bullet's dynamic trees.
 //
-// When a few boxes leave their fat boxes (a particle struck in a collision, a wall's bounce), their
+// When a few boxes leave their fat boxes (a particle struck in a collision, a user's drag), their
 // pairs are mended instead: each gets a new fat box, its old fat pairs are dropped and its new
 // ones found through the last run's grid (and among the boxes mended since, which the grid holds
-// stale). The grid is run again when too many left (`most_leavers_share` of the boxes, or more
-// mended since the run than `most_mended_share`), when the particles that take part change, or
+// stale). The grid is run again when too many left (the `most_*` limits below), when the particles that take part change, or
 // when a particle that slept at the last run wakes (the grid leaves out pairs of two sleepers).
 // The result is always the set of overlapping pairs the grid alone would give, sorted: the cache
 // changes the cost, never the pairs, on any number of threads.
@@ -18,7 +17,8 @@
 // gets a thin fat box, a fast one a wide one (a uniform margin sized by the fastest particle made
 // every fat box as wide as the fastest one's). It is capped at a quarter of the free space
 // between boxes (the mean spacing (V/m)^(1/3) less the median box) and at twice the box's own
-// longest side, so the fat boxes of a dilute gas meet few others, a crowd's fat boxes a bounded number.
+// longest side, so the fat boxes of a dilute gas meet few others, a crowd's fat boxes a bounded
+// number.
 // Fat boxes are not made for the next `quiet_calls` calls when they served only the call that
 // made them (some ball of a settling pile always leaves), or when they made more than one fat
 // pair per box (a crowd: testing those each step costs about what the grid does). A settling pile
@@ -37,8 +37,8 @@ class PairCache {
 public:
     // Half a step past a whole number: a particle on a straight path stays inside its fat box for
     // the 6 steps after the grid run and is then clearly out (on a whole number it would end on
-    // the boundary, where round-off decides). On the gas at 1e5 (dt 1 and 2 ms) 6.5 cost less than 3, 3.5 and 4.5 (each
-    // particle's margin is also at most its box, so fast ones are mended earlier).
+    // the boundary, where round-off decides). On the gas at 1e5 (dt 1 and 2 ms) 6.5 cost less
+    // than 3, 3.5 and 4.5.
     static constexpr double steps_ahead = 6.5;
     // Mended rather than run again: at most this share of the boxes leaving in one call, and of
     // the boxes mended since the grid ran.
