@@ -40,14 +40,15 @@ std::uint64_t BroadPhase::coordinate(double x, int axis) const {
     return static_cast<std::uint64_t>(static_cast<std::int64_t>((x - origin_[axis]) * inverse_cell_));
 }
 
-BoxSpread spread_of(const SweptBoxes& boxes, std::size_t threads) {
+BoxSpread spread_of(const SweptBoxes& boxes, std::size_t threads, BoxSpreadScratch& scratch) {
     const std::size_t m = boxes.ids.size(), stride = std::max<std::size_t>(1, m / 1024);
-    std::vector<double> sample;
-    sample.reserve(m / stride + 1);
+    std::vector<double>& sample = scratch.sample;
+    sample.clear();
     for (std::size_t k = 0; k < m; k += stride) sample.push_back(boxes.extent(boxes.ids[k]));
     const auto middle = sample.begin() + static_cast<std::ptrdiff_t>(sample.size() / 2);
     std::nth_element(sample.begin(), middle, sample.end());
-    std::vector<BoxSpread> parts(range_tasks(m, threads));
+    std::vector<BoxSpread>& parts = scratch.parts;
+    parts.resize(range_tasks(m, threads));
     for_ranges(m, threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
         const SweptBox* box = boxes.box.data();
         double low[3], high[3];  // locals: kept in registers
@@ -78,7 +79,7 @@ BoxSpread spread_of(const SweptBoxes& boxes, std::size_t threads) {
 void BroadPhase::choose_cell(const SweptBoxes& boxes, std::size_t threads) {
     // The region of the boxes rounded out to floats (monotonic), and a cell 2^scale_ times the
     // median box (> 0: every box holds a sphere).
-    const BoxSpread spread = spread_of(boxes, threads);
+    const BoxSpread spread = spread_of(boxes, threads, spread_scratch_);
     double high[3];
     for (int k = 0; k < 3; ++k) {
         origin_[k] = below(spread.low[k]);
@@ -365,7 +366,7 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
     threads_ = threads;
     boxes_ = &boxes;
     reuse_or_reset_order(boxes);
-    const std::size_t tasks = threads > 1 && m >= 8192 ? threads : 1;
+    const std::size_t tasks = range_tasks(m, threads);
     if (parts_.size() < tasks) parts_.resize(tasks);
     choose_cell(boxes, threads);
     run(tasks, [&](std::size_t t) { enter_boxes(boxes, asleep, m * t / tasks, m * (t + 1) / tasks, parts_[t]); });

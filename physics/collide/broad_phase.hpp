@@ -44,6 +44,11 @@ struct SweptBox {
     double lo[3], hi[3];
 };
 
+inline bool overlap(const SweptBox& a, const SweptBox& b) {
+    return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] && a.lo[2] <= b.hi[2] &&
+           b.lo[2] <= a.hi[2];
+}
+
 // Swept boxes, one per particle index (one box in one cache line or two: the broad phase reads
 // them in the order of space, not of the indices); `ids` lists the particles that take part
 // (frozen ones are left out), in increasing order.
@@ -60,22 +65,22 @@ struct SweptBoxes {
         box.resize(n);
         move.resize(n);
     }
-    bool overlap(std::uint32_t i, std::uint32_t j) const {
-        const SweptBox &a = box[i], &b = box[j];
-        return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
-               a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
-    }
+    bool overlap(std::uint32_t i, std::uint32_t j) const { return collide::overlap(box[i], box[j]); }
     double extent(std::uint32_t i) const;  // the box's largest side
 };
 
 // The region the boxes of `ids` take (low and high corners) and their median extent, from an
 // evenly strided sample of at most 1024 boxes (the same on every run); the region on up to
-// `threads` threads. At least one id.
+// `threads` threads. At least one id. `scratch` keeps its buffers from call to call.
 struct BoxSpread {
     double low[3], high[3];
     double median;
 };
-BoxSpread spread_of(const SweptBoxes& boxes, std::size_t threads);
+struct BoxSpreadScratch {
+    std::vector<double> sample;
+    std::vector<BoxSpread> parts;  // per task
+};
+BoxSpread spread_of(const SweptBoxes& boxes, std::size_t threads, BoxSpreadScratch& scratch);
 
 class BroadPhase {
 public:
@@ -154,6 +159,7 @@ private:
     int passes_ = 1, digit_ = 1;  // of the radix sort: digits of digit_ bits
     std::size_t entry_count_ = 0;
     std::vector<std::uint32_t> big_;
+    BoxSpreadScratch spread_scratch_;
     const SweptBoxes* boxes_ = nullptr;     // during a call
     bool exact_ = true;                     // during a call
     // The ids in the order of their home cells at the last call, then the big ones: the next call

@@ -39,11 +39,11 @@ bool PairCache::find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep
     return true;
 }
 
-double PairCache::choose_cap(const SweptBoxes& boxes, std::size_t threads) const {
+double PairCache::choose_cap(const SweptBoxes& boxes, std::size_t threads) {
     // A quarter of the free space between the boxes: the mean spacing (the boxes' region over
     // their number, cube root) less the median box. 0 when nothing moves.
     if (!(boxes.reach > 0.0)) return 0.0;
-    const BoxSpread spread = spread_of(boxes, threads);
+    const BoxSpread spread = spread_of(boxes, threads, spread_scratch_);
     double volume = 1.0;
     for (int k = 0; k < 3; ++k) volume *= spread.high[k] - spread.low[k];
     const double spacing = std::cbrt(volume / static_cast<double>(boxes.ids.size()));
@@ -111,9 +111,7 @@ bool PairCache::mend(const SweptBoxes& boxes) {
             query_ = 1;
         }
         auto meet = [&](std::uint32_t j, const SweptBox& g) {
-            const bool apart = f.lo[0] > g.hi[0] || g.lo[0] > f.hi[0] || f.lo[1] > g.hi[1] || g.lo[1] > f.hi[1] ||
-                               f.lo[2] > g.hi[2] || g.lo[2] > f.hi[2];
-            if (!apart) new_pairs_.push_back({std::min(i, j), std::max(i, j)});
+            if (overlap(f, g)) new_pairs_.push_back({std::min(i, j), std::max(i, j)});
         };
         for (const std::uint32_t j : near_) {  // stale: the mended ones and the leavers
             if (j == i || is_mended_[j] || is_leaver_[j] || stamp_[j] == query_) continue;

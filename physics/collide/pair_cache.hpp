@@ -65,7 +65,7 @@ public:
 private:
     bool find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads);
     bool mend(const SweptBoxes& boxes);
-    double choose_cap(const SweptBoxes& boxes, std::size_t threads) const;
+    double choose_cap(const SweptBoxes& boxes, std::size_t threads);
     double margin_of(const SweptBoxes& boxes, std::uint32_t i) const;
     SweptBox fat_box(const SweptBoxes& boxes, std::uint32_t i) const;
     void forget_mended();
@@ -90,6 +90,7 @@ private:
     std::vector<SweptBox> new_fat_;
     std::vector<Pair> new_pairs_, kept_pairs_;
     std::uint32_t query_ = 0;
+    BoxSpreadScratch spread_scratch_;
     double cap_ = 0.0;     // the margins' cap at the last grid run (0: no margins)
     double margin_ = 0.0;  // the largest margin at the last grid run
     bool valid_ = false;
