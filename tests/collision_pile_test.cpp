@@ -150,5 +150,45 @@ TEST(CollisionPile, ASleepingPileWakesWhenStruckAndSleepsAgain) {
     EXPECT_LT(deepest_overlap(sim.state()), 0.01);
 }
 
+// Events of a settling pile: each ball's stop is reported where it ends at rest, once per
+// ball, not every time the floor's friction stops a ball its neighbours then push on (before,
+// this pile of 200 reported tens of stops per ball); every ball is at rest at the end, with the
+// event that left it there (the studies' time to rest).
+TEST(CollisionPile, ASettlingPileReportsEachBallsStopWhereItEnds) {
+    const Pile p = pile(200, 0.3, 0.6, 5);
+    Simulation sim(p.model, p.particles);
+    sim.run_until(3.0);
+    sim.step();  // the last islands to fall asleep are held from the step after
+    std::vector<std::size_t> stops(sim.particle_count(), 0);
+    std::vector<double> stopped_at(sim.particle_count(), -1.0);
+    for (const Event& e : sim.events()) {
+        if (e.kind == EventKind::stop) ++stops[e.particle];
+        if ((e.kind == EventKind::stop || e.kind == EventKind::rest) && e.speed_out == 0.0) stopped_at[e.particle] = e.t;
+        else if (e.kind == EventKind::bounce || e.kind == EventKind::lift) stopped_at[e.particle] = -1.0;
+    }
+    EXPECT_LE(*std::max_element(stops.begin(), stops.end()), 3u);
+    for (std::size_t i = 0; i < sim.particle_count(); ++i) {
+        ASSERT_TRUE(sim.at_rest(i)) << "ball " << i;
+        EXPECT_GE(stopped_at[i], 0.0) << "ball " << i << " is at rest with no event that stopped it";
+    }
+}
+
+// A ball sliding alone on the floor of a scene with collisions keeps its stop: one event, at the
+// closed-form time v0 / (mu g) of a Coulomb slide.
+TEST(CollisionPile, ABallSlidingAloneStillStopsOnce) {
+    Pile p = pile(0, 2.0, 1.0);
+    p.particles.push_back({{-0.5, 0.02, 0.0}, {1.0, 0.0, 0.0}, 0.03, 0.02});
+    p.particles.push_back({{0.8, 0.02, 0.8}, {0.0, 0.0, 0.0}, 0.03, 0.02});  // far away, at rest
+    Simulation sim(p.model, p.particles);
+    sim.run_until(0.5);
+    std::vector<Event> stops;
+    for (const Event& e : sim.events())
+        if (e.kind == EventKind::stop) stops.push_back(e);
+    ASSERT_EQ(stops.size(), 1u);
+    EXPECT_EQ(stops[0].particle, 0u);
+    EXPECT_NEAR(stops[0].t, 1.0 / (0.5 * 9.81), 0.002);
+    EXPECT_TRUE(sim.at_rest(0));
+}
+
 }  // namespace
 }  // namespace pl

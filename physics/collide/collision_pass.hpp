@@ -61,10 +61,13 @@ public:
     static double impact_speed(const Model& m, double h);
 
     const std::vector<std::uint32_t>& moved() const { return moved_; }
+    bool moved(std::uint32_t i) const { return touched_[i] != 0; }  // i is in moved()
     const std::vector<Pair>& candidates() const { return pairs_; }
     const PairCache& pair_cache() const { return pair_cache_; }
     const std::vector<SolverContact>& contacts() const { return solver_.contacts(); }
     const std::vector<std::uint8_t>& asleep() const { return islands_.asleep(); }
+    // This step: the particles of a pile that fell asleep (SleepIslands::fell_asleep).
+    const std::vector<std::uint32_t>& fell_asleep() const { return islands_.fell_asleep(); }
     std::size_t asleep_count() const { return islands_.asleep_count(); }
     std::uint64_t resting_contacts() const { return resting_; }  // loaded contacts, last step
 

@@ -45,6 +45,8 @@ void SleepIslands::fall_asleep(const std::vector<std::uint32_t>& members) {
         ring_[members[k]] = members[(k + 1) % members.size()];
     }
     asleep_count_ += members.size();
+    for (const std::uint32_t i : members)
+        if (in_contact_[i] == in_pair) fell_asleep_.push_back(i);
 }
 
 void SleepIslands::update_still(const ParticleState& s, double rest_speed, double h, std::size_t threads) {
@@ -63,7 +65,7 @@ void SleepIslands::update_still(const ParticleState& s, double rest_speed, doubl
                     still_[i] = 0.0;
                     continue;
                 }
-                in_contact_[i] = 1;
+                in_contact_[i] = alone_on_wall;
                 resting.push_back(i);
             }
             const double surface = glm::length(s.spin(i)) * s.radius[i];
@@ -78,6 +80,7 @@ void SleepIslands::update_still(const ParticleState& s, double rest_speed, doubl
 void SleepIslands::update(const ParticleState& s, const std::vector<SolverContact>& contacts, double rest_speed,
                           double h, std::size_t threads) {
     // (The islands touched by an awake particle, struck or kicked were woken before: wake().)
+    fell_asleep_.clear();
     for (const std::uint32_t i : members_) {
         in_contact_[i] = 0;
         parent_[i] = i;
@@ -87,7 +90,7 @@ void SleepIslands::update(const ParticleState& s, const std::vector<SolverContac
         if (c.is_wall() || !c.active) continue;
         for (const std::uint32_t i : {c.a, c.b})
             if (!in_contact_[i]) {
-                in_contact_[i] = 1;
+                in_contact_[i] = in_pair;
                 members_.push_back(i);
             }
         const std::uint32_t ra = root(c.a), rb = root(c.b);

@@ -35,6 +35,9 @@ public:
     void wake(std::uint32_t i);
 
     const std::vector<std::uint8_t>& asleep() const { return asleep_; }
+    // The particles in pair contacts whose islands fell asleep in the last update (in island
+    // order; not those alone on a wall, whose rest is the wall's).
+    const std::vector<std::uint32_t>& fell_asleep() const { return fell_asleep_; }
     std::size_t asleep_count() const { return asleep_count_; }
 
 private:
@@ -46,13 +49,15 @@ private:
     std::vector<double> still_;           // s each particle has been still in contact
     std::vector<std::uint32_t> parent_;   // union-find over this step's contacts
     std::vector<double> island_still_;    // per root: the least still time of its particles
-    std::vector<std::uint8_t> in_contact_;
+    std::vector<std::uint8_t> in_contact_;  // this step: 0, in_pair or alone_on_wall
+    static constexpr std::uint8_t in_pair = 1, alone_on_wall = 2;
     std::vector<std::uint8_t> asleep_;
     std::vector<std::uint32_t> ring_;     // asleep: the next particle of its island (a ring)
     std::vector<std::uint32_t> members_;  // awake particles in some pair contact this step
     static constexpr std::uint32_t none = 0xffffffffu;
     std::vector<std::uint32_t> head_, next_member_;  // per root: its island's particles, chained
     std::vector<std::uint32_t> island_;   // scratch: one island's particles
+    std::vector<std::uint32_t> fell_asleep_;
     std::vector<std::vector<std::uint32_t>> task_resting_;  // per task: particles alone on a wall
     std::size_t asleep_count_ = 0;
 };

@@ -111,11 +111,44 @@ void Simulation::run_until(double t) {
 }
 
 void Simulation::collide_step() {
+    const std::size_t first = events_.size();
+    const std::uint64_t dropped = dropped_events_;
     collisions_->begin_step(state_, model_, thread_count(threads_));
     kernel_(context(), 1);
+    // Events the cap dropped during the call were the oldest: the new ones start that much earlier.
+    const std::size_t step_events = first - std::min<std::uint64_t>(first, dropped_events_ - dropped);
+    // The kernel stepped the sleeping particles too; the pass puts them back where they slept,
+    // so what the kernel reported of them (a bounce off a wall a pile pressed them against) did
+    // not happen.
+    const std::vector<std::uint8_t>& asleep = collisions_->asleep();
+    events_.erase(std::remove_if(events_.begin() + static_cast<std::ptrdiff_t>(step_events), events_.end(),
+                                 [&asleep](const Event& e) { return asleep[e.particle] != 0; }),
+                  events_.end());
     collisions_last_step_ = collisions_->end_step(state_, model_, dt(), thread_count(threads_));
     collisions_total_ += collisions_last_step_;
     for (const std::uint32_t i : collisions_->moved()) release_from_walls(i, state_.velocity(i));
+    book_stops(step_events);
+}
+
+void Simulation::book_stops(std::size_t first) {
+    // A stop is the end of a particle's motion. A ball in a settling pile is stopped by the
+    // floor's friction in the kernel and pushed on by its neighbours' contacts, every few steps
+    // (tens of "stops" per ball, from speeds down to 1e-20 m/s, none of them its last): its
+    // stillness is the islands' to judge. So the stops of particles the collision pass acted on
+    // this step (struck, or in a contact that pushed) are dropped, and each particle of a pile
+    // whose island falls asleep stops there, at the end of this step (held from the next step
+    // on). A particle alone on a wall keeps the kernel's stop.
+    const collide::CollisionPass& pass = *collisions_;
+    const auto undone = [&pass](const Event& e) { return e.kind == EventKind::stop && pass.moved(e.particle); };
+    events_.erase(std::remove_if(events_.begin() + static_cast<std::ptrdiff_t>(first), events_.end(), undone),
+                  events_.end());
+    for (const std::uint32_t i : pass.fell_asleep())
+        events_.push_back({time(), i, -1, EventKind::stop, glm::length(state_.velocity(i)), 0.0});
+}
+
+bool Simulation::at_rest(std::size_t i) const {
+    const bool held = state_.resting[i] != 0 || (collisions_ && collisions_->asleep()[i]);
+    return held && !state_.frozen[i] && state_.velocity(i) == Vec3(0.0);
 }
 
 std::uint64_t Simulation::resting_contacts() const { return collisions_ ? collisions_->resting_contacts() : 0; }

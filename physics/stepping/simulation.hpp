@@ -99,6 +99,9 @@ public:
     std::size_t asleep_count() const;
     const std::vector<std::uint8_t>& asleep() const;
     const collide::CollisionPass* collision_pass() const { return collisions_.get(); }
+    // Particle i is at rest: not frozen, no velocity, and held there, on a wall (static friction)
+    // or asleep in a pile. The studies' "time to rest" counts from the event that left it so.
+    bool at_rest(std::size_t i) const;
 
     // Reynolds numbers the monitor has seen (at its samples, over the moving particles that are
     // neither on a wall nor frozen); lo > hi while none has flown, and without drag.
@@ -121,6 +124,8 @@ private:
     // Walls that velocity v points away from stop holding particle i (a kick or a collision).
     void release_from_walls(std::size_t i, const Vec3& v);
     void collide_step();  // one kernel step followed by the collision pass
+    // The collision pass's events (after the step's kernel events from `first` on).
+    void book_stops(std::size_t first);
 
     Model model_;
     WindField wind_;

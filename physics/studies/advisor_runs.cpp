@@ -17,10 +17,6 @@ std::uint8_t floor_walls(const Model& model) {
     return mask;
 }
 
-bool at_rest(const ParticleState& s, std::size_t i) {
-    return s.resting[i] != 0 && !s.frozen[i] && s.velocity(i) == Vec3(0.0);
-}
-
 // Per-step bookkeeping of one run: events (landing, impacts, rest) and the apex.
 struct Recorder {
     Recorder(const Model& m, const std::vector<ParticleSpec>& p) : model(m), particles(p) {}
@@ -95,7 +91,7 @@ RunOutcome observe_run(const Model& model, const std::vector<ParticleSpec>& part
         for (std::size_t i = 0; i < n; ++i) {
             ParticleOutcome& p = r.out.particles[i];
             if (!p.landing) p.apex_height = std::max(p.apex_height, sim.state().y[i] - r.floor_y);
-            all_done = all_done && (sim.state().frozen[i] || at_rest(sim.state(), i));
+            all_done = all_done && (sim.state().frozen[i] || sim.at_rest(i));
         }
     }
     if (measure_numbers && model.drag.model != DragModel::none) {
@@ -108,7 +104,7 @@ RunOutcome observe_run(const Model& model, const std::vector<ParticleSpec>& part
     for (std::size_t i = 0; i < n; ++i) {
         ParticleOutcome& p = r.out.particles[i];
         p.end = sim.state().position(i);
-        if (at_rest(sim.state(), i)) p.rest_time = r.stopped_since[i];
+        if (sim.at_rest(i)) p.rest_time = r.stopped_since[i];
     }
     r.out.end_time = sim.time();
     return std::move(r.out);

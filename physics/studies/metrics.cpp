@@ -144,8 +144,7 @@ VariantMetrics metrics_of(const MetricsTracker& m, const Simulation& sim) {
     for (std::size_t i = 0; i < s.size(); ++i) {
         ParticleMetrics& p = out.particles[i];
         p.final_range = horizontal_distance(s.position(i), m.start_position[i]);
-        const bool at_rest = s.resting[i] != 0 && !s.frozen[i] && s.velocity(i) == Vec3(0.0);
-        p.time_to_rest = at_rest ? m.stopped_since[i] : std::nullopt;
+        p.time_to_rest = sim.at_rest(i) ? m.stopped_since[i] : std::nullopt;
         if (p.time_to_rest) latest_rest = std::max(latest_rest, *p.time_to_rest);
         else all_rest = false;
         p.lost_drag = s.dissipated_drag[i];
