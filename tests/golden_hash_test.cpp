@@ -153,7 +153,7 @@ const Case preset_cases[] = {
     {"integrators.json", 4, 2500, 0x1671a6cf90b282c6ull},
     {"integrators.json", 5, 2500, 0x920f55b49777b5f2ull},
     {"launch_velocities.json", 0, 2500, 0xa642f164efb05db3ull},
-    {"many_particles.json", 0, 500, 0xe368c08a6f71f7cbull},
+    {"many_particles.json", 0, 500, 0x756d37a17083bd0cull},
     {"newtons_cradle.json", 0, 2500, 0xf501a4137312391full},
     {"newtons_cradle.json", 1, 2500, 0x3371869659abb03cull},
     {"newtons_cradle.json", 2, 2500, 0xf8cb045724cd4f5full},

@@ -23,6 +23,7 @@ fi
 import json, os, subprocess, sys
 app, preset, work = sys.argv[1:4]
 scene = json.load(open(preset))
+scene["collisions"] = {"enabled": False}  # the engine's state alone (the collision pass adds its own)
 
 def peak_kb(count):
     scene["emitter"]["count"] = count
