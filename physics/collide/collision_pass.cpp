@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <utility>
 
 namespace pl::collide {
 namespace {
@@ -34,7 +35,7 @@ void move_to(ParticleState& s, const Model& m, std::uint32_t i, const Vec3& x) {
 
 CollisionPass::CollisionPass(std::size_t particles)
     : start_(particles), start_velocity_(particles), start_spin_(particles), path_start_(particles), path_rate_(particles), path_time_(particles),
-      stamp_(particles, 0), touched_(particles, 0), islands_(particles) {
+      stamp_(particles, 0), touched_(particles, 0), row_(particles, no_row), islands_(particles) {
     boxes_.resize(particles);
 }
 
@@ -54,11 +55,14 @@ void CollisionPass::begin_step(const ParticleState& s, const Model& m, std::size
 
 void CollisionPass::build_boxes(const ParticleState& s, std::size_t threads) {
     // The boxes, and the farthest any moved along an axis (a maximum per task, then over the
-    // tasks: the same on any number of threads).
+    // tasks: the same on any number of threads), and the frozen particles counted.
     task_reach_.assign(range_tasks(s.size(), threads), 0.0);
+    task_frozen_.assign(task_reach_.size(), 0);
     for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
         double reach = 0.0;
+        std::size_t frozen = 0;
         for (std::size_t i = begin; i < end; ++i) {
+            frozen += s.frozen[i];
             const Vec3 stop = s.position(i);
             const double r = s.radius[i];
             double move = 0.0;
@@ -71,8 +75,13 @@ void CollisionPass::build_boxes(const ParticleState& s, std::size_t threads) {
             reach = std::max(reach, move);
         }
         task_reach_[task] = reach;
+        task_frozen_[task] = frozen;
     });
     boxes_.reach = *std::max_element(task_reach_.begin(), task_reach_.end());
+    // The unfrozen ones take part: while none is frozen, that is every index, as last step (the
+    // list is remade only when it changes: a serial pass over all particles each step, else).
+    const bool none_frozen = std::all_of(task_frozen_.begin(), task_frozen_.end(), [](std::size_t f) { return f == 0; });
+    if (none_frozen && boxes_.ids.size() == s.size()) return;
     boxes_.ids.clear();
     for (std::uint32_t i = 0; i < s.size(); ++i)
         if (!s.frozen[i]) boxes_.ids.push_back(i);
@@ -186,19 +195,31 @@ void CollisionPass::find_hits(const ParticleState& s, double h, bool spin, doubl
                      });
 }
 
-void CollisionPass::index_pairs(std::size_t particles) {
-    // Each particle's pairs (compressed rows: pair_start_[i] to pair_start_[i + 1] in pair_of_).
-    pair_start_.assign(particles + 1, 0);
-    for (const Pair& p : pairs_) {
-        ++pair_start_[p.a + 1];
-        ++pair_start_[p.b + 1];
-    }
-    for (std::size_t i = 1; i <= particles; ++i) pair_start_[i] += pair_start_[i - 1];
+void CollisionPass::index_pairs() {
+    // Each paired particle's pairs, in compressed rows: particle i's row r = row_[i] runs from
+    // pair_start_[r] to pair_start_[r + 1] in pair_of_, its pairs in increasing order. Rows only
+    // for the particles in some pair (paired_, in order of first appearance): the cost follows
+    // the pairs, not the particles (a row per particle made this a serial pass over all of them).
+    for (const std::uint32_t i : paired_) row_[i] = no_row;  // the last step's rows
+    paired_.clear();
+    pair_start_.clear();
+    for (const Pair& p : pairs_)
+        for (const std::uint32_t i : {p.a, p.b}) {
+            if (row_[i] == no_row) {
+                row_[i] = static_cast<std::uint32_t>(paired_.size());
+                paired_.push_back(i);
+                pair_start_.push_back(0);
+            }
+            ++pair_start_[row_[i]];
+        }
+    pair_start_.push_back(0);
+    std::uint32_t sum = 0;
+    for (std::uint32_t& start : pair_start_) sum += std::exchange(start, sum);  // counts to starts
     pair_fill_.assign(pair_start_.begin(), pair_start_.end() - 1);
     pair_of_.resize(2 * pairs_.size());
     for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
-        pair_of_[pair_fill_[pairs_[k].a]++] = k;
-        pair_of_[pair_fill_[pairs_[k].b]++] = k;
+        pair_of_[pair_fill_[row_[pairs_[k].a]]++] = k;
+        pair_of_[pair_fill_[row_[pairs_[k].b]]++] = k;
     }
     pair_queued_.assign(pairs_.size(), 0);
 }
@@ -209,7 +230,7 @@ void CollisionPass::queue_pairs_of(const std::vector<std::uint32_t>& resolved, s
     // particles were free would have been resolved).
     queue_.clear();
     for (const std::uint32_t i : resolved)
-        for (std::uint32_t k = pair_start_[i]; k < pair_start_[i + 1]; ++k)
+        for (std::uint32_t k = pair_start_[row_[i]]; k < pair_start_[row_[i] + 1]; ++k)
             if (pair_queued_[pair_of_[k]] != pass) {
                 pair_queued_[pair_of_[k]] = pass;
                 queue_.push_back(pair_of_[k]);
@@ -243,7 +264,7 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
             resolved_.push_back(c.b);
             ++impulses;
         }
-        if (pass == 1) index_pairs(s.size());
+        if (pass == 1) index_pairs();
         queue_pairs_of(resolved_, pass + 1);
     }
     for (const std::uint32_t i : moved_) stamp_[i] = 0;  // only resolved particles carry a stamp

@@ -83,7 +83,7 @@ private:
     void hold_sleepers(ParticleState& s);
     void find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
     std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, double impact, std::size_t threads);
-    void index_pairs(std::size_t particles);
+    void index_pairs();
     void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
     void remove_overlaps(ParticleState& s, const Model& m);
@@ -99,13 +99,17 @@ private:
     std::vector<std::uint8_t> touched_;
     std::vector<std::uint32_t> moved_;
     SweptBoxes boxes_;
-    std::vector<double> task_reach_;  // per task of build_boxes
+    std::vector<double> task_reach_;          // per task of build_boxes
+    std::vector<std::size_t> task_frozen_;
     PairCache pair_cache_;
     std::vector<Pair> pairs_;
     std::vector<Hit> hits_;
     // The impact passes: the pairs a pass searches (all, then those of the particles the last
-    // pass resolved), and each particle's pairs to find them.
+    // pass resolved), and each particle's pairs to find them (index_pairs).
     std::vector<std::uint32_t> queue_, resolved_, pair_start_, pair_fill_, pair_of_, pair_queued_;
+    static constexpr std::uint32_t no_row = 0xffffffffu;
+    std::vector<std::uint32_t> row_;     // per particle: its row of pairs, or no_row
+    std::vector<std::uint32_t> paired_;  // the particles with a row
     std::vector<std::vector<Hit>> slice_hits_;  // per slice of pairs, when threaded
     ContactSolver solver_;
     SleepIslands islands_;

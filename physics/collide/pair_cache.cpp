@@ -8,9 +8,10 @@
 namespace pl::collide {
 
 bool PairCache::find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads) {
-    // False when the fat boxes cannot serve at all; else leavers_ lists the boxes out of their
-    // fat boxes (each task's in index order, joined in task order).
-    if (!valid_ || boxes.ids != fat_.ids || boxes.box.size() != fat_.box.size()) return false;
+    // False when the fat boxes cannot serve at all (other particles take part, or one woke);
+    // else leavers_ lists the boxes out of their fat boxes (each task's in index order, joined in
+    // task order). The ids are compared on the threads, as the boxes are read.
+    if (!valid_ || boxes.ids.size() != fat_.ids.size() || boxes.box.size() != fat_.box.size()) return false;
     const std::size_t m = boxes.ids.size(), tasks = range_tasks(m, threads);
     task_holds_.assign(tasks, 1);
     task_leavers_.resize(tasks);
@@ -21,6 +22,10 @@ bool PairCache::find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep
         out.clear();
         for (std::size_t n = begin; n < end; ++n) {
             const std::uint32_t i = boxes.ids[n];
+            if (i != fat_.ids[n]) {
+                task_holds_[task] = 0;
+                return;
+            }
             const SweptBox &b = box[i], &f = fat[i];
             const bool inside = b.lo[0] >= f.lo[0] && b.lo[1] >= f.lo[1] && b.lo[2] >= f.lo[2] && b.hi[0] <= f.hi[0] &&
                                 b.hi[1] <= f.hi[1] && b.hi[2] <= f.hi[2];
