@@ -55,24 +55,31 @@ void CollisionPass::begin_step(const ParticleState& s, const Model& m, std::size
 
 void CollisionPass::build_boxes(const ParticleState& s, std::size_t threads) {
     // The boxes, and the farthest any moved along an axis (a maximum per task, then over the
-    // tasks: the same on any number of threads), and the frozen particles counted.
-    task_reach_.assign(range_tasks(s.size(), threads), 0.0);
-    task_frozen_.assign(task_reach_.size(), 0);
+    // tasks: the same on any number of threads), and the frozen particles counted. Each box is
+    // tested against the pair cache's fat box as it is made (PairCache::watch).
+    const std::size_t tasks = range_tasks(s.size(), threads);
+    task_reach_.assign(tasks, 0.0);
+    task_frozen_.assign(tasks, 0);
+    const bool watch = pair_cache_.watch(tasks, s.size());
+    const std::vector<std::uint8_t>& asleep = islands_.asleep();
     for_ranges(s.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
         double reach = 0.0;
         std::size_t frozen = 0;
         for (std::size_t i = begin; i < end; ++i) {
-            frozen += s.frozen[i];
             const Vec3 stop = s.position(i);
             const double r = s.radius[i];
             double move = 0.0;
+            SweptBox b;
             for (int k = 0; k < 3; ++k) {
-                boxes_.box[i].lo[k] = std::min(start_[i][k], stop[k]) - r;
-                boxes_.box[i].hi[k] = std::max(start_[i][k], stop[k]) + r;
+                b.lo[k] = std::min(start_[i][k], stop[k]) - r;
+                b.hi[k] = std::max(start_[i][k], stop[k]) + r;
                 move = std::max(move, std::abs(stop[k] - start_[i][k]));
             }
+            boxes_.box[i] = b;
             boxes_.move[i] = static_cast<float>(move);
             reach = std::max(reach, move);
+            frozen += s.frozen[i];
+            if (watch && !s.frozen[i]) pair_cache_.check(task, static_cast<std::uint32_t>(i), b, asleep[i] != 0);
         }
         task_reach_[task] = reach;
         task_frozen_[task] = frozen;
@@ -85,6 +92,7 @@ void CollisionPass::build_boxes(const ParticleState& s, std::size_t threads) {
     boxes_.ids.clear();
     for (std::uint32_t i = 0; i < s.size(); ++i)
         if (!s.frozen[i]) boxes_.ids.push_back(i);
+    ids_changed_ = true;
 }
 
 double CollisionPass::impact_speed(const Model& m, double h) {
@@ -281,10 +289,12 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     // Pairs of two sleeping particles are left out: with every particle asleep there are none,
     // and a pile asleep costs no broad phase at all.
     const std::vector<std::uint8_t>& asleep = islands_.asleep();
-    if (std::any_of(boxes_.ids.begin(), boxes_.ids.end(), [&](std::uint32_t i) { return !asleep[i]; }))
-        pair_cache_.find_pairs(boxes_, pairs_, asleep.data(), threads);
-    else
+    if (std::any_of(boxes_.ids.begin(), boxes_.ids.end(), [&](std::uint32_t i) { return !asleep[i]; })) {
+        pair_cache_.find_pairs_watched(boxes_, pairs_, asleep.data(), threads, !ids_changed_);
+        ids_changed_ = false;
+    } else {
         pairs_.clear();
+    }
     const double impact = impact_speed(m, h);
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, impact, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.

@@ -99,6 +99,7 @@ private:
     std::vector<std::uint8_t> touched_;
     std::vector<std::uint32_t> moved_;
     SweptBoxes boxes_;
+    bool ids_changed_ = false;  // boxes_.ids remade since the pair cache last saw them
     std::vector<double> task_reach_;          // per task of build_boxes
     std::vector<std::size_t> task_frozen_;
     PairCache pair_cache_;

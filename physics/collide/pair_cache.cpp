@@ -16,31 +16,31 @@ bool PairCache::find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep
     task_holds_.assign(tasks, 1);
     task_leavers_.resize(tasks);
     for_ranges(m, threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
-        const SweptBox* box = boxes.box.data();
-        const SweptBox* fat = fat_.box.data();
-        std::vector<std::uint32_t>& out = task_leavers_[task];
-        out.clear();
-        for (std::size_t n = begin; n < end; ++n) {
+        task_leavers_[task].clear();
+        for (std::size_t n = begin; n < end && task_holds_[task]; ++n) {
             const std::uint32_t i = boxes.ids[n];
-            if (i != fat_.ids[n]) {
-                task_holds_[task] = 0;
-                return;
-            }
-            const SweptBox &b = box[i], &f = fat[i];
-            const bool inside = b.lo[0] >= f.lo[0] && b.lo[1] >= f.lo[1] && b.lo[2] >= f.lo[2] && b.hi[0] <= f.hi[0] &&
-                                b.hi[1] <= f.hi[1] && b.hi[2] <= f.hi[2];
-            if (slept_[i] && !(asleep && asleep[i])) {  // woke: the grid left out its pairs with sleepers
-                task_holds_[task] = 0;
-                return;
-            }
-            if (!inside) out.push_back(i);
+            if (i != fat_.ids[n]) task_holds_[task] = 0;
+            else check(task, i, boxes.box[i], asleep && asleep[i]);
         }
     });
+    return join_leavers();
+}
+
+bool PairCache::join_leavers() {
     leavers_.clear();
-    for (std::size_t t = 0; t < tasks; ++t) {
+    for (std::size_t t = 0; t < task_holds_.size(); ++t) {
         if (!task_holds_[t]) return false;
         leavers_.insert(leavers_.end(), task_leavers_[t].begin(), task_leavers_[t].end());
     }
+    return true;
+}
+
+bool PairCache::watch(std::size_t tasks, std::size_t particles) {
+    watched_ = valid_ && fat_.box.size() == particles;
+    if (!watched_) return false;
+    task_holds_.assign(tasks, 1);
+    task_leavers_.resize(tasks);
+    for (std::vector<std::uint32_t>& leavers : task_leavers_) leavers.clear();
     return true;
 }
 
@@ -171,9 +171,22 @@ void PairCache::test_fat_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs
 
 void PairCache::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
                            std::size_t threads) {
+    pairs_after_leavers(find_leavers(boxes, asleep, threads), boxes, pairs, asleep, threads);
+}
+
+void PairCache::find_pairs_watched(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
+                                   std::size_t threads, bool ids_same) {
+    const bool holds = watched_ && ids_same && boxes.ids.size() == fat_.ids.size() && join_leavers();
+    watched_ = false;
+    pairs_after_leavers(holds, boxes, pairs, asleep, threads);
+}
+
+void PairCache::pairs_after_leavers(bool holds, const SweptBoxes& boxes, std::vector<Pair>& pairs,
+                                    const std::uint8_t* asleep, std::size_t threads) {
+    // `holds`: the fat boxes can serve, and leavers_ lists the boxes out of them.
     ++calls_;
     pairs.clear();
-    if (find_leavers(boxes, asleep, threads) && (leavers_.empty() || (margin_ > 0.0 && mend(boxes)))) {
+    if (holds && (leavers_.empty() || (margin_ > 0.0 && mend(boxes)))) {
         ++served_;
         return test_fat_pairs(boxes, pairs, asleep, threads);
     }

@@ -55,6 +55,23 @@ public:
     void find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep = nullptr,
                     std::size_t threads = 1);
 
+    // The same for a caller that makes the boxes itself (CollisionPass::build_boxes): the test of
+    // each box against its fat box is done as the box is made, while it is in cache, instead of
+    // in a pass of its own over all boxes. Before making them, watch(tasks, n) (n: the particle
+    // indices); when it returns true, check(task, i, box, asleep) every box of `ids` once, each
+    // task over a range of indices in increasing order, the ranges in task order. Then
+    // find_pairs_watched, with `ids_same` false when `ids` may differ from the last call's.
+    bool watch(std::size_t tasks, std::size_t particles);
+    void check(std::size_t task, std::uint32_t i, const SweptBox& b, bool asleep) {
+        const SweptBox& f = fat_.box[i];
+        if (slept_[i] && !asleep) task_holds_[task] = 0;  // woke: the grid left out its pairs with sleepers
+        if (!(b.lo[0] >= f.lo[0] && b.lo[1] >= f.lo[1] && b.lo[2] >= f.lo[2] && b.hi[0] <= f.hi[0] &&
+              b.hi[1] <= f.hi[1] && b.hi[2] <= f.hi[2]))
+            task_leavers_[task].push_back(i);
+    }
+    void find_pairs_watched(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
+                            std::size_t threads, bool ids_same);
+
     const BroadPhase& grid() const { return grid_; }
     double margin() const { return margin_; }                       // the largest, of the last grid run
     std::size_t fat_pair_count() const { return fat_pairs_.size(); }  // pairs of fat boxes
@@ -64,6 +81,9 @@ public:
 
 private:
     bool find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads);
+    bool join_leavers();
+    void pairs_after_leavers(bool holds, const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
+                             std::size_t threads);
     bool mend(const SweptBoxes& boxes);
     double choose_cap(const SweptBoxes& boxes, std::size_t threads);
     double margin_of(const SweptBoxes& boxes, std::uint32_t i) const;
@@ -94,6 +114,7 @@ private:
     double cap_ = 0.0;     // the margins' cap at the last grid run (0: no margins)
     double margin_ = 0.0;  // the largest margin at the last grid run
     bool valid_ = false;
+    bool watched_ = false;  // check() ran since watch()
     std::uint64_t calls_ = 0, grid_runs_ = 0, mends_ = 0;
     std::uint64_t served_ = 0;       // calls the fat boxes served (with the one that made them)
     std::uint64_t quiet_until_ = 0;  // no margin before this call
