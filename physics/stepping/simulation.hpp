@@ -124,8 +124,9 @@ private:
     // Walls that velocity v points away from stop holding particle i (a kick or a collision).
     void release_from_walls(std::size_t i, const Vec3& v);
     void collide_step();  // one kernel step followed by the collision pass
-    // The collision pass's events (after the step's kernel events from `first` on).
-    void book_stops(std::size_t first);
+    // The step's events from `first` on, after the collision pass: a pile's contacts are not
+    // bounces and stops; its balls stop when they fall asleep.
+    void book_pile_events(std::size_t first);
 
     Model model_;
     WindField wind_;
