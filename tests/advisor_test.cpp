@@ -113,6 +113,17 @@ TEST(Advisor, FastTennisBallNeedsQuadraticDragAndNotStokes) {
     EXPECT_EQ(advise(scene, loose).variants[0].cheapest_adequate, DragModel::none);
 }
 
+// Each distinct model the rows compare is run once: for one ball without drag, the scene itself,
+// the reference (sphere_re), linear and quadratic drag, buoyancy and added mass turned on, ISA
+// air and the constant air of the floor it is compared with. The drag toggle's "on" is the
+// reference (the scene has no drag of its own), and its "off" the scene; collisions and wind do
+// not apply to one ball in calm air. Before, the plan keyed runs by the builder that made them
+// and ran the reference twice here (9 runs).
+TEST(Advisor, EachDistinctModelRunsOnce) {
+    const Scene scene = scene_with({{-15, 0.5, 0}, {25, 15, 0}, 0.057, 0.033}, DragModel::none);
+    EXPECT_EQ(advise(scene, {}).variants[0].distinct_runs, 8u);
+}
+
 TEST(Advisor, WindWithoutDragHasNoEffectAndWindWithDragIsMeasured) {
     Scene scene = scene_with({{0, 0.5, 0}, {3, 4, 0}, 0.057, 0.033}, DragModel::none);
     scene.world.wind.kind = WindKind::constant;

@@ -25,6 +25,7 @@ struct Room {
     Vec3 min_corner() const { return center - 0.5 * size; }
     Vec3 max_corner() const { return center + 0.5 * size; }
     double floor_y() const { return center.y - 0.5 * size.y; }
+    friend bool operator==(const Room&, const Room&) = default;
 };
 
 // How the air's density and viscosity are found (physics/model/air_model.hpp): constant, the
@@ -36,6 +37,7 @@ struct Air {
     double viscosity_pa_s = 1.81e-5;  // constant: dynamic viscosity at 15 C
     AirModel model = AirModel::constant;
     double base_altitude_m = 0.0;   // isa: geometric altitude of the room's floor above sea level
+    friend bool operator==(const Air&, const Air&) = default;
 };
 
 enum class WindKind { none, constant, gust, shear, vortex };
@@ -57,6 +59,7 @@ struct WindSettings {
     Vec3 vortex_axis{0.0, 1.0, 0.0};
     double vortex_max_speed = 3.0;
     double vortex_core_radius_m = 1.0;
+    friend bool operator==(const WindSettings&, const WindSettings&) = default;
 };
 
 struct World {
@@ -65,6 +68,7 @@ struct World {
     WindSettings wind;
     bool buoyancy = false;  // the displaced air's weight lifts each particle (terms/buoyancy.hpp)
     bool added_mass = false;  // each particle carries 1/2 rho V of air along (terms/air_column.hpp)
+    friend bool operator==(const World&, const World&) = default;
 };
 
 enum class DragModel { none, linear, quadratic, sphere_re };
@@ -79,6 +83,7 @@ struct DragSettings {
     std::optional<double> linear_b;
     LiftModel lift = LiftModel::none;  // Magnus lift on spinning particles (terms/magnus.hpp)
     double spin_decay_s = 30.0;        // with lift: time constant of the spin's aerodynamic decay
+    friend bool operator==(const DragSettings&, const DragSettings&) = default;
 };
 
 // How e depends on the impact speed v_n (contact.restitution_law; physics/model/restitution.hpp).
@@ -94,6 +99,7 @@ struct ContactSettings {
     double rolling_resistance = 0.0;  // with spin: c_rr, a rolling ball decelerates at c_rr times the press
     RestitutionLaw restitution_law = RestitutionLaw::constant;
     double restitution_speed = 1.0;  // viscoelastic: the impact speed (m/s) at which e = restitution
+    friend bool operator==(const ContactSettings&, const ContactSettings&) = default;
 };
 
 // Particle-particle collisions (physics/collide/): off by default, and then no collision code runs.
@@ -101,6 +107,7 @@ struct CollisionSettings {
     bool enabled = false;
     double restitution = 0.9;  // e on the pair's normal relative velocity, 0..1
     double friction = 0.0;     // Coulomb mu between the two surfaces, >= 0
+    friend bool operator==(const CollisionSettings&, const CollisionSettings&) = default;
 };
 
 enum class Method { explicit_euler, semi_implicit_euler, velocity_verlet, rk4, dopri5, exponential };
@@ -111,6 +118,7 @@ struct IntegratorSettings {
     double rtol = 1e-6;  // dopri5 only
     double atol = 1e-9;  // dopri5 only
     bool adaptive = true;  // dopri5: false takes exactly one Dormand-Prince step per dt
+    friend bool operator==(const IntegratorSettings&, const IntegratorSettings&) = default;
 };
 
 // Moment of inertia of a sphere, I = k m R^2: solid k = 2/5, thin hollow shell k = 2/3.
@@ -175,6 +183,7 @@ struct Model {
     ContactSettings contact;
     IntegratorSettings integrator;
     CollisionSettings collisions;
+    friend bool operator==(const Model&, const Model&) = default;
 };
 
 std::size_t variant_count(const Scene& scene);  // >= 1

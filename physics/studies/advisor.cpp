@@ -97,16 +97,18 @@ namespace {
 
 using Builder = bool (*)(Model&);
 
-// The distinct models the rows need, each run once: keyed by the builder that made it, or by
-// nullptr for the variant as configured (a builder that changed nothing).
-// Two different builders that make the same model run it twice (the drag toggle in a scene
-// without drag repeats the reference): correct, one run slower.
+// The distinct models the rows need, each run once: keyed by the first builder that made it, or
+// by nullptr for the variant as configured (a builder that changed nothing). A builder whose
+// model is one already planned gets that one's key: the reference drag and the row of the same
+// drag model (or the drag toggle in a scene without drag) share one run.
 struct RunPlan {
     std::map<Builder, Model> models;
     Builder key(const Model& variant, Builder b) {
         Model m = variant;
-        if (!b(m)) b = nullptr;
-        models.try_emplace(b, b ? m : variant);
+        if (!b(m)) return nullptr;
+        for (const auto& [key, planned] : models)
+            if (planned == m) return key;
+        models.emplace(b, m);
         return b;
     }
 };
@@ -218,6 +220,7 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
             runs[key] = observe_run(m, particles, o.max_duration_s, false, o.cancel);
         }
     for (const auto& [key, r] : runs) a.simulated_s = std::max(a.simulated_s, r.end_time);
+    a.distinct_runs = runs.size();
 
     const RunOutcome& ref = runs.at(reference);
     a.re_min = std::isfinite(ref.re_min) ? ref.re_min : 0.0;

@@ -119,6 +119,7 @@ struct VariantAdvice {
     double stokes_error_factor = 1.0;
     DragModel cheapest_adequate = DragModel::sphere_re;  // cheapest within tolerance of sphere_re
     double simulated_s = 0.0;            // longest run (stops when all rest, or at max duration)
+    std::size_t distinct_runs = 0;       // simulations run: one per distinct model the rows compare
     std::vector<std::string> verdicts;   // one sentence per term
     std::vector<std::string> warnings;   // Mach > 0.3, models outside their validity range, ...
 };
