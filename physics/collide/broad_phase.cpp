@@ -258,10 +258,7 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
                 if (skip) continue;  // apart even in the rounded-out boxes
                 // The exact boxes, read once per pair (out of memory order): only here.
                 const std::uint32_t i = ep.id & id_mask, j = eq.id & id_mask;
-                const SweptBox &a = box[i], &b = box[j];
-                if (exact_ && (a.lo[0] > b.hi[0] || b.lo[0] > a.hi[0] || a.lo[1] > b.hi[1] || b.lo[1] > a.hi[1] ||
-                               a.lo[2] > b.hi[2] || b.lo[2] > a.hi[2]))
-                    continue;
+                if (exact_ && !overlap(box[i], box[j])) continue;
                 pairs.push_back({std::min(i, j), std::max(i, j)});
             }
         }
