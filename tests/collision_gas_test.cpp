@@ -1,13 +1,16 @@
 // Invariants of particle-particle collisions over many impacts: momentum to round-off, kinetic
 // energy kept at e = 1 without friction and never gained otherwise, the energy ledger's residual,
 // the same bits on one and two threads, and the impulse's own laws with spin and friction.
+#include "physics/collide/collision_pass.hpp"
 #include "physics/collide/narrow_phase.hpp"
 #include "physics/model/emitter.hpp"
 #include "physics/stepping/energy.hpp"
+#include "physics/stepping/relaunch.hpp"
 #include "physics/stepping/simulation.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <random>
 
@@ -87,6 +90,36 @@ TEST(CollisionGas, MomentumKeptToRoundOffAndEnergyNeverGained) {
     const EnergyBreakdown en = total_energy(sim.state(), sim.model().world.gravity, sim.model().room);
     EXPECT_LT(en.collision_work, 0.0);
     EXPECT_NEAR(en.residual() / en.initial, 0.0, 1e-12);
+}
+
+bool has_pair_with(const Simulation& sim, std::uint32_t i) {
+    const std::vector<collide::Pair>& pairs = sim.collision_pass()->candidates();
+    return std::any_of(pairs.begin(), pairs.end(), [i](const collide::Pair& p) { return p.a == i || p.b == i; });
+}
+
+// The particles that take part change: one that freezes (a runaway) leaves the pairs at once,
+// and relaunched it joins them again (the collision pass remakes its list of particles only
+// when one froze or thawed, and the pair cache then runs the grid again).
+TEST(CollisionGas, AFrozenParticleLeavesThePairsAndARelaunchedOneJoinsThem) {
+    const Gas g = gas(2000, 1.0, 0.0);
+    Simulation sim(g.model, g.particles);
+    sim.step_n(30);
+    const Vec3 x5 = sim.state().position(5);
+    relaunch_particle(sim, 5, x5, {4e8, 0.0, 0.0});  // faster than light: frozen by its next step
+    sim.step();
+    ASSERT_TRUE(sim.state().frozen[5]);
+    EXPECT_EQ(sim.state().position(5), x5);
+    for (int k = 0; k < 20; ++k) {
+        sim.step();
+        ASSERT_FALSE(has_pair_with(sim, 5)) << "step " << k;
+    }
+    // Back, overlapping particle 7 (1.5 cm apart, radii 1 cm): the next step pairs them.
+    const Vec3 x7 = sim.state().position(7);
+    relaunch_particle(sim, 5, x7 + Vec3(x7.x > 0.0 ? -0.015 : 0.015, 0.0, 0.0), Vec3(0.0));
+    sim.step();
+    ASSERT_FALSE(sim.state().frozen[5]);
+    const std::vector<collide::Pair>& pairs = sim.collision_pass()->candidates();
+    EXPECT_NE(std::find(pairs.begin(), pairs.end(), collide::Pair{std::min(5u, 7u), std::max(5u, 7u)}), pairs.end());
 }
 
 TEST(CollisionGas, SameBitsOnOneAndTwoThreads) {
