@@ -75,12 +75,10 @@ void Simulation::step_n(std::uint64_t n) {
         const std::uint64_t to_sample = period - steps_ % period;
         // With collisions, the pass follows every step: one step per kernel call.
         const std::uint64_t k = collisions_ ? 1 : std::min({n, to_sample, steps_per_kernel_call});
-        const std::size_t first = events_.size();
-        const std::uint64_t dropped = dropped_events_;
+        const EventMark mark = mark_events();
         if (collisions_) collide_step();
         else kernel_(context(), static_cast<std::uint32_t>(k));
-        // Events the cap dropped during the call were the oldest: the new ones start that much earlier.
-        if (no_rest_floors_) watch_rest(first - std::min<std::uint64_t>(first, dropped_events_ - dropped));
+        if (no_rest_floors_) watch_rest(events_since(mark));
         monitor();
         n -= k;
     }
@@ -111,12 +109,10 @@ void Simulation::run_until(double t) {
 }
 
 void Simulation::collide_step() {
-    const std::size_t first = events_.size();
-    const std::uint64_t dropped = dropped_events_;
+    const EventMark mark = mark_events();
     collisions_->begin_step(state_, model_, thread_count(threads_));
     kernel_(context(), 1);
-    // Events the cap dropped during the call were the oldest: the new ones start that much earlier.
-    const std::size_t step_events = first - std::min<std::uint64_t>(first, dropped_events_ - dropped);
+    const std::size_t step_events = events_since(mark);
     // The kernel stepped the sleeping particles too; the pass puts them back where they slept,
     // so what the kernel reported of them (a bounce off a wall a pile pressed them against) did
     // not happen.
@@ -128,6 +124,11 @@ void Simulation::collide_step() {
     collisions_total_ += collisions_last_step_;
     for (const std::uint32_t i : collisions_->moved()) release_from_walls(i, state_.velocity(i));
     book_pile_events(step_events);
+}
+
+std::size_t Simulation::events_since(const EventMark& mark) const {
+    // Events the cap dropped since the mark were the oldest: the new ones start that much earlier.
+    return mark.size - std::min<std::uint64_t>(mark.size, dropped_events_ - mark.dropped);
 }
 
 void Simulation::book_pile_events(std::size_t first) {

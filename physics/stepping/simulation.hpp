@@ -123,6 +123,14 @@ private:
     std::uint64_t monitor_period() const;  // it samples the steps that are multiples of this
     // Walls that velocity v points away from stop holding particle i (a kick or a collision).
     void release_from_walls(std::size_t i, const Vec3& v);
+    // Where the events stood before a kernel call, and the index of the first event the call
+    // added (the cap may have dropped older ones meanwhile).
+    struct EventMark {
+        std::size_t size;
+        std::uint64_t dropped;
+    };
+    EventMark mark_events() const { return {events_.size(), dropped_events_}; }
+    std::size_t events_since(const EventMark& mark) const;
     void collide_step();  // one kernel step followed by the collision pass
     // The step's events from `first` on, after the collision pass: a pile's contacts are not
     // bounces and stops; its balls stop when they fall asleep.
