@@ -12,11 +12,9 @@ bool PairCache::find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep
     // else leavers_ lists the boxes out of their fat boxes (each task's in index order, joined in
     // task order). The ids are compared on the threads, as the boxes are read.
     if (!valid_ || boxes.ids.size() != fat_.ids.size() || boxes.box.size() != fat_.box.size()) return false;
-    const std::size_t m = boxes.ids.size(), tasks = range_tasks(m, threads);
-    task_holds_.assign(tasks, 1);
-    task_leavers_.resize(tasks);
+    const std::size_t m = boxes.ids.size();
+    begin_checks(range_tasks(m, threads));
     for_ranges(m, threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
-        task_leavers_[task].clear();
         for (std::size_t n = begin; n < end && task_holds_[task]; ++n) {
             const std::uint32_t i = boxes.ids[n];
             if (i != fat_.ids[n]) task_holds_[task] = 0;
@@ -35,13 +33,16 @@ bool PairCache::join_leavers() {
     return true;
 }
 
-bool PairCache::watch(std::size_t tasks, std::size_t particles) {
-    watched_ = valid_ && fat_.box.size() == particles;
-    if (!watched_) return false;
+void PairCache::begin_checks(std::size_t tasks) {
     task_holds_.assign(tasks, 1);
     task_leavers_.resize(tasks);
     for (std::vector<std::uint32_t>& leavers : task_leavers_) leavers.clear();
-    return true;
+}
+
+bool PairCache::watch(std::size_t tasks, std::size_t particles) {
+    watched_ = valid_ && fat_.box.size() == particles;
+    if (watched_) begin_checks(tasks);
+    return watched_;
 }
 
 double PairCache::choose_cap(const SweptBoxes& boxes, std::size_t threads) {
@@ -63,8 +64,7 @@ double PairCache::margin_of(const SweptBoxes& boxes, std::uint32_t i) const {
     return std::min({cap_, steps_ahead * static_cast<double>(boxes.move[i]), 2.0 * boxes.extent(i)});
 }
 
-SweptBox PairCache::fat_box(const SweptBoxes& boxes, std::uint32_t i) const {
-    const double margin = margin_of(boxes, i);
+SweptBox PairCache::fat_box(const SweptBoxes& boxes, std::uint32_t i, double margin) {
     SweptBox f;
     for (int k = 0; k < 3; ++k) {
         f.lo[k] = boxes.box[i].lo[k] - margin;
@@ -82,8 +82,9 @@ void PairCache::grow_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, 
         double largest = 0.0;
         for (std::size_t n = begin; n < end; ++n) {
             const std::uint32_t i = boxes.ids[n];
-            fat_.box[i] = fat_box(boxes, i);
-            largest = std::max(largest, margin_of(boxes, i));
+            const double margin = margin_of(boxes, i);
+            fat_.box[i] = fat_box(boxes, i, margin);
+            largest = std::max(largest, margin);
             slept_[i] = asleep ? asleep[i] : 0;
         }
         task_margin_[task] = largest;
@@ -107,7 +108,7 @@ bool PairCache::mend(const SweptBoxes& boxes) {
     bool found = true;
     for (std::size_t l = 0; found && l < leavers_.size(); ++l) {
         const std::uint32_t i = leavers_[l];
-        const SweptBox f = fat_box(boxes, i);
+        const SweptBox f = fat_box(boxes, i, margin_of(boxes, i));
         new_fat_.push_back(f);
         near_.clear();
         found = grid_.near(f, near_);

@@ -81,13 +81,14 @@ public:
 
 private:
     bool find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads);
+    void begin_checks(std::size_t tasks);  // the per-task state check() fills
     bool join_leavers();
     void pairs_after_leavers(bool holds, const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
                              std::size_t threads);
     bool mend(const SweptBoxes& boxes);
     double choose_cap(const SweptBoxes& boxes, std::size_t threads);
     double margin_of(const SweptBoxes& boxes, std::uint32_t i) const;
-    SweptBox fat_box(const SweptBoxes& boxes, std::uint32_t i) const;
+    static SweptBox fat_box(const SweptBoxes& boxes, std::uint32_t i, double margin);
     void forget_mended();
     void grow_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t threads);
     void test_fat_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
