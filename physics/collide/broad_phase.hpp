@@ -105,6 +105,9 @@ public:
     // boxes have moved (pair_cache.hpp).
     bool near(const SweptBox& box, std::vector<std::uint32_t>& out) const;
 
+    // The particles of the last call in the order of their home cells (then the big ones): an
+    // order of space, which the contact solver lays its bodies out in.
+    const std::vector<std::uint32_t>& order() const { return order_; }
     double cell_size() const { return cell_; }             // of the last call
     std::size_t big_count() const { return big_.size(); }    // particles tested against all, last call
     std::size_t entry_count() const { return entry_count_; }  // cell entries, last call

@@ -299,7 +299,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, impact, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
     solver_.gather(s, m, pairs_, moved_, asleep, h, impact, threads);
-    resting_ = solver_.solve(s, m, h, start_velocity_, start_spin_, threads);
+    resting_ = solver_.solve(s, m, h, start_velocity_, start_spin_, pair_cache_.grid().order(), threads);
     for (const SolverContact& c : solver_.contacts()) {
         if (!c.active) continue;
         touch(c.a);
