@@ -232,7 +232,7 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
     // holds the low corner of the boxes' intersection (the one cell of the several they may share
     // that reports them). A cell of sleeping entries only is passed over. The particles whose home
     // this cell is are appended to `homes` (the next call's order). Returns the number of cells.
-    const SweptBox* box = boxes_->box.data();
+    const std::size_t first_pair = pairs.size();
     std::size_t cells = 0;
     for (std::size_t run = begin; run < end; ++cells) {
         const std::uint64_t cell = entries_[run].cell;
@@ -256,15 +256,31 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
                                  int(ep.lo[0] > eq.hi[0]) | int(eq.lo[0] > ep.hi[0]) | int(ep.lo[1] > eq.hi[1]) |
                                  int(eq.lo[1] > ep.hi[1]) | int(ep.lo[2] > eq.hi[2]) | int(eq.lo[2] > ep.hi[2]);
                 if (skip) continue;  // apart even in the rounded-out boxes
-                // The exact boxes, read once per pair (out of memory order): only here.
                 const std::uint32_t i = ep.id & id_mask, j = eq.id & id_mask;
-                if (exact_ && !overlap(box[i], box[j])) continue;
                 pairs.push_back({std::min(i, j), std::max(i, j)});
             }
         }
         run = run_end;
     }
+    if (exact_) keep_exact(pairs, first_pair);
     return cells;
+}
+
+void BroadPhase::keep_exact(std::vector<Pair>& pairs, std::size_t from) const {
+    // The exact boxes of the pairs from `from` on, fetched ahead: they are out of memory order
+    // (a pile's neighbours have random indices), and tested one by one as the cells were
+    // scanned, each pair's two boxes came from main memory in turn.
+    const SweptBox* box = boxes_->box.data();
+    constexpr std::size_t ahead = 8;
+    std::size_t kept = from;
+    for (std::size_t k = from; k < pairs.size(); ++k) {
+        if (k + ahead < pairs.size()) {
+            __builtin_prefetch(&box[pairs[k + ahead].a]);
+            __builtin_prefetch(&box[pairs[k + ahead].b]);
+        }
+        if (overlap(box[pairs[k].a], box[pairs[k].b])) pairs[kept++] = pairs[k];
+    }
+    pairs.resize(kept);
 }
 
 void BroadPhase::pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const {

@@ -147,6 +147,7 @@ private:
     void radix_pass(const std::vector<Source>& sources, Entry* out, int shift, std::uint32_t mask, bool counted);
     std::size_t scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs,
                            std::vector<std::uint32_t>& homes) const;
+    void keep_exact(std::vector<Pair>& pairs, std::size_t from) const;
     std::size_t scan(std::vector<Pair>& pairs, std::size_t threads);
     void merge_slices(std::vector<Pair>& pairs);
     void pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
