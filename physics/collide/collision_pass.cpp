@@ -35,7 +35,7 @@ void move_to(ParticleState& s, const Model& m, std::uint32_t i, const Vec3& x) {
 
 CollisionPass::CollisionPass(std::size_t particles)
     : start_(particles), start_velocity_(particles), start_spin_(particles), path_start_(particles), path_rate_(particles), path_time_(particles),
-      stamp_(particles, 0), touched_(particles, 0), row_(particles, no_row), islands_(particles) {
+      stamp_(particles, 0), touched_(particles, 0), listed_(particles, 0), row_(particles, 0), islands_(particles) {
     boxes_.resize(particles);
 }
 
@@ -203,24 +203,34 @@ void CollisionPass::find_hits(const ParticleState& s, double h, bool spin, doubl
                      });
 }
 
+void CollisionPass::list_pair_particles() {
+    // The particles of the pairs, each once, in order of first appearance. A pile's ball is in a
+    // dozen pairs: the passes over the pairs' particles (their paths, their clamp to the room)
+    // touched its scattered state a dozen times a step, from main memory at 1e5; the flags are a
+    // byte a particle, which the caches hold.
+    pair_particles_.clear();
+    for (const Pair& p : pairs_)
+        for (const std::uint32_t i : {p.a, p.b})
+            if (!listed_[i]) {
+                listed_[i] = 1;
+                pair_particles_.push_back(i);
+            }
+    for (const std::uint32_t i : pair_particles_) listed_[i] = 0;
+}
+
 void CollisionPass::index_pairs() {
     // Each paired particle's pairs, in compressed rows: particle i's row r = row_[i] runs from
     // pair_start_[r] to pair_start_[r + 1] in pair_of_, its pairs in increasing order. Rows only
-    // for the particles in some pair (paired_, in order of first appearance): the cost follows
-    // the pairs, not the particles (a row per particle made this a serial pass over all of them).
-    for (const std::uint32_t i : paired_) row_[i] = no_row;  // the last step's rows
-    paired_.clear();
-    pair_start_.clear();
-    for (const Pair& p : pairs_)
-        for (const std::uint32_t i : {p.a, p.b}) {
-            if (row_[i] == no_row) {
-                row_[i] = static_cast<std::uint32_t>(paired_.size());
-                paired_.push_back(i);
-                pair_start_.push_back(0);
-            }
-            ++pair_start_[row_[i]];
-        }
-    pair_start_.push_back(0);
+    // for the particles in some pair (pair_particles_: row r is its r-th): the cost follows the
+    // pairs, not the particles (a row per particle made this a serial pass over all of them).
+    // Rows of particles in no pair are stale and never read.
+    const auto rows = static_cast<std::uint32_t>(pair_particles_.size());
+    for (std::uint32_t r = 0; r < rows; ++r) row_[pair_particles_[r]] = r;
+    pair_start_.assign(std::size_t{rows} + 1, 0);
+    for (const Pair& p : pairs_) {
+        ++pair_start_[row_[p.a]];
+        ++pair_start_[row_[p.b]];
+    }
     std::uint32_t sum = 0;
     for (std::uint32_t& start : pair_start_) sum += std::exchange(start, sum);  // counts to starts
     pair_fill_.assign(pair_start_.begin(), pair_start_.end() - 1);
@@ -247,12 +257,11 @@ void CollisionPass::queue_pairs_of(const std::vector<std::uint32_t>& resolved, s
 
 std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, double h, double impact,
                                              std::size_t threads) {
-    for (const Pair& p : pairs_)
-        for (const std::uint32_t i : {p.a, p.b}) {
-            path_start_[i] = start_[i];
-            path_time_[i] = 0.0;
-            path_rate_[i] = (s.position(i) - start_[i]) / h;
-        }
+    for (const std::uint32_t i : pair_particles_) {
+        path_start_[i] = start_[i];
+        path_time_[i] = 0.0;
+        path_rate_[i] = (s.position(i) - start_[i]) / h;
+    }
     const bool spin = spin_matters(m);
     std::uint64_t impulses = 0;
     queue_.resize(pairs_.size());
@@ -295,6 +304,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     } else {
         pairs_.clear();
     }
+    list_pair_particles();
     const double impact = impact_speed(m, h);
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, impact, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
@@ -309,8 +319,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     remove_overlaps(s, m);
     const RoomBounds room(m.room);
     for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
-    for (const Pair& p : pairs_)
-        for (const std::uint32_t i : {p.a, p.b}) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+    for (const std::uint32_t i : pair_particles_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
     // The one place islands wake in a step: every particle struck by an impact or in an active
     // contact (a sleeping one touched by an awake one) is in moved_.
     for (const std::uint32_t i : moved_)

@@ -83,6 +83,7 @@ private:
     void hold_sleepers(ParticleState& s);
     void find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
     std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, double impact, std::size_t threads);
+    void list_pair_particles();
     void index_pairs();
     void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
@@ -97,6 +98,7 @@ private:
     std::vector<double> path_time_;
     std::vector<std::uint32_t> stamp_;  // pass number that last resolved the particle
     std::vector<std::uint8_t> touched_;
+    std::vector<std::uint8_t> listed_;  // per particle: 1 while list_pair_particles runs
     std::vector<std::uint32_t> moved_;
     SweptBoxes boxes_;
     bool ids_changed_ = false;  // boxes_.ids remade since the pair cache last saw them
@@ -108,9 +110,8 @@ private:
     // The impact passes: the pairs a pass searches (all, then those of the particles the last
     // pass resolved), and each particle's pairs to find them (index_pairs).
     std::vector<std::uint32_t> queue_, resolved_, pair_start_, pair_fill_, pair_of_, pair_queued_;
-    static constexpr std::uint32_t no_row = 0xffffffffu;
-    std::vector<std::uint32_t> row_;     // per particle: its row of pairs, or no_row
-    std::vector<std::uint32_t> paired_;  // the particles with a row
+    std::vector<std::uint32_t> row_;     // per particle: its row of pairs (valid for pair_particles_)
+    std::vector<std::uint32_t> pair_particles_;  // the particles of pairs_, each once (list_pair_particles)
     std::vector<std::vector<Hit>> slice_hits_;  // per slice of pairs, when threaded
     ContactSolver solver_;
     SleepIslands islands_;
