@@ -166,7 +166,13 @@ void ContactSolver::place_bodies(const std::vector<std::uint32_t>& space_order) 
     // any it misses in index order): a contact's two bodies are neighbours in space, so with the
     // contacts taken in slot order (colour_contacts) the iterations read the bodies almost in
     // sequence. In index order, a pile of random indices read each body from main memory.
+    // Bodies few among many particles (a gas, a pile mostly asleep) keep the index order: the
+    // walk over `space_order` would cost more than their layout saves.
     slot_particle_.clear();
+    if (bodies_.size() * few_bodies_share < space_order.size()) {
+        slot_particle_ = bodies_;
+        return;
+    }
     for (const std::uint32_t i : bodies_) in_body_[i] = 1;
     for (const std::uint32_t i : space_order)
         if (i < in_body_.size() && in_body_[i] == 1) {

@@ -128,6 +128,7 @@ private:
     std::vector<std::uint32_t> colour_start_, by_colour_, next_in_colour_, slot_start_, by_slot_;
     std::vector<SolverContact> coloured_;  // the active contacts in by_colour_ order, while solving
     static constexpr std::uint32_t parallel_colour = 512;  // smaller colours run on one thread
+    static constexpr std::size_t few_bodies_share = 4;     // bodies under 1/4 of the particles: index order
 };
 
 }  // namespace pl::collide
