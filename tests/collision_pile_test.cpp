@@ -7,6 +7,8 @@
 #include "physics/stepping/energy.hpp"
 #include "physics/stepping/simulation.hpp"
 
+#include "test_scenes.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,35 +16,8 @@
 namespace pl {
 namespace {
 
-// Balls of 2 cm and 30 g, released at random (overlapping some) over a floor of `side` x
-// `side` m, falling from up to `height` m; walls and pairs with e = 0.5, mu = 0.5.
-struct Pile {
-    Model model;
-    std::vector<ParticleSpec> particles;
-};
-
-Pile pile(std::size_t n, double side, double height, std::uint64_t seed = 1) {
-    Pile p;
-    p.model.room.center = {0.0, height / 2, 0.0};
-    p.model.room.size = {side, height, side};
-    p.model.contact.restitution = 0.5;
-    p.model.contact.friction = 0.5;
-    p.model.contact.rest_speed = 0.05;
-    p.model.integrator.dt = 0.002;
-    p.model.collisions = {true, 0.5, 0.5};
-    Emitter e;
-    e.count = n;
-    e.seed = seed;
-    const double inner = side / 2 - 0.03;
-    e.region_min = {-inner, 0.1 * height, -inner};
-    e.region_max = {inner, 0.95 * height, inner};
-    e.speed_min = 0.0;
-    e.speed_max = 0.5;
-    e.radius_min = e.radius_max = 0.02;
-    e.mass_min = e.mass_max = 0.03;
-    p.particles = emit_particles(e, p.model.room);
-    return p;
-}
+using test::pile;
+using test::Pile;
 
 double kinetic(const ParticleState& s) {
     double e = 0.0;

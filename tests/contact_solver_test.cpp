@@ -4,8 +4,9 @@
 // in index order, reversed and shuffled: the same velocities, positions, work and impulses.
 #include "physics/collide/collision_pass.hpp"
 #include "physics/collide/contact_solver.hpp"
-#include "physics/model/emitter.hpp"
 #include "physics/stepping/simulation.hpp"
+
+#include "test_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,21 +20,8 @@ namespace {
 // 600 balls of 2 cm dropped onto a 0.3 m floor, stepped until they are heaped but not asleep:
 // thousands of contacts in a dozen colours or more.
 Simulation heaped_pile() {
-    Model m;
-    m.room.center = {0.0, 0.3, 0.0};
-    m.room.size = {0.3, 0.6, 0.3};
-    m.contact = {0.5, 0.5, 0.05};
-    m.integrator.dt = 0.002;
-    m.collisions = {true, 0.5, 0.5};
-    Emitter e;
-    e.count = 600;
-    e.seed = 3;
-    e.region_min = {-0.12, 0.05, -0.12};
-    e.region_max = {0.12, 0.55, 0.12};
-    e.speed_max = 0.5;
-    e.radius_min = e.radius_max = 0.02;
-    e.mass_min = e.mass_max = 0.03;
-    Simulation sim(m, emit_particles(e, m.room));
+    const test::Pile p = test::pile(600, 0.3, 0.6, 3);
+    Simulation sim(p.model, p.particles);
     sim.run_until(0.5);
     return sim;
 }
