@@ -264,7 +264,6 @@ void ContactSolver::colour_contacts() {
         ++colour_start_[colour + 1];
     }
     for (std::size_t c = 1; c < colour_start_.size(); ++c) colour_start_[c] += colour_start_[c - 1];
-    order_by_colour();
 }
 
 void ContactSolver::order_by_colour() {
@@ -320,6 +319,7 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
     load_bodies(s, space_order);
     warm_start();
     colour_contacts();
+    order_by_colour();
     for_each_coloured(threads, [&](const SolverContact& c) { apply(c, c.lambda_n * c.n + c.lambda_t, spin); });
     for (int it = 0; it < iterations; ++it) for_each_coloured(threads, [&](SolverContact& c) { solve_contact(c, spin); });
     for (std::size_t k = 0; k < by_colour_.size(); ++k) {  // the impulses back, for the next warm start
