@@ -137,7 +137,7 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
     const std::uint32_t digit_mask = (1u << digit_) - 1;  // the radix sort's first digit, counted here
     part.count.assign(std::size_t{digit_mask} + 1, 0);
     std::uint32_t* count = part.count.data();
-    const std::uint32_t* order = order_.data();
+    const std::uint32_t* order = slot_id_.data();
     const SweptBox* box = boxes.box.data();
     constexpr std::size_t ahead = 16;  // the order of space is not that of memory: fetch ahead
     for (std::size_t n = begin; n < end; ++n) {
@@ -158,20 +158,20 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
             part.big.push_back(i);
             continue;
         }
-        const std::uint32_t id = i | (asleep && asleep[i] ? 0u : awake_bit);
+        FloatBox& slot_box = slot_box_[n];
+        for (int k = 0; k < 3; ++k) {
+            slot_box.lo[k] = lo_f[k];
+            slot_box.hi[k] = hi_f[k];
+        }
+        const std::uint32_t slot = static_cast<std::uint32_t>(n) | (asleep && asleep[i] ? 0u : awake_bit);
         for (std::uint64_t z = lo[2]; z <= hi[2]; ++z)
             for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
                 for (std::uint64_t x = lo[0]; x <= hi[0]; ++x) {
-                    // Field by field: a whole-struct copy from the stack stalls on store forwarding.
                     Entry& e = part.entries.emplace_back();
                     e.cell = static_cast<std::uint32_t>(linear(x, y, z));
                     ++count[e.cell & digit_mask];
-                    e.id = id | (x == lo[0] ? first_x_bit : 0u) | (y == lo[1] ? first_y_bit : 0u) |
-                           (z == lo[2] ? first_z_bit : 0u);
-                    for (int k = 0; k < 3; ++k) {
-                        e.lo[k] = lo_f[k];
-                        e.hi[k] = hi_f[k];
-                    }
+                    e.slot = slot | (x == lo[0] ? first_x_bit : 0u) | (y == lo[1] ? first_y_bit : 0u) |
+                             (z == lo[2] ? first_z_bit : 0u);
                 }
     }
 }
@@ -239,24 +239,26 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
         std::size_t run_end = run;
         std::uint32_t awake = 0;
         for (; run_end < end && entries_[run_end].cell == cell; ++run_end) {
-            const std::uint32_t id = entries_[run_end].id;
-            awake |= id & awake_bit;
-            if ((id & home_bits) == home_bits) homes.push_back(id & id_mask);
+            const std::uint32_t slot = entries_[run_end].slot;
+            awake |= slot & awake_bit;
+            if ((slot & home_bits) == home_bits) homes.push_back(slot_id_[slot & slot_mask]);
         }
         for (std::size_t p = run; awake && p + 1 < run_end; ++p) {
-            const Entry& ep = entries_[p];
+            const std::uint32_t sp = entries_[p].slot;
+            const FloatBox& bp = slot_box_[sp & slot_mask];
             for (std::size_t q = p + 1; q < run_end; ++q) {
-                const Entry& eq = entries_[q];
+                const std::uint32_t sq = entries_[q].slot;
+                const FloatBox& bq = slot_box_[sq & slot_mask];
                 // The cell reports the pair when, along each axis, one of the two boxes starts
                 // in it: it is then the low corner of the cells they share, met once per pair.
                 // One branch for all of it (a fat box passes a test about as often as not: each
                 // branch of its own would be mispredicted half the time).
-                const std::uint32_t both = ep.id | eq.id;
+                const std::uint32_t both = sp | sq;
                 const int skip = int((both & (awake_bit | home_bits)) != (awake_bit | home_bits)) |  // or both asleep
-                                 int(ep.lo[0] > eq.hi[0]) | int(eq.lo[0] > ep.hi[0]) | int(ep.lo[1] > eq.hi[1]) |
-                                 int(eq.lo[1] > ep.hi[1]) | int(ep.lo[2] > eq.hi[2]) | int(eq.lo[2] > ep.hi[2]);
+                                 int(bp.lo[0] > bq.hi[0]) | int(bq.lo[0] > bp.hi[0]) | int(bp.lo[1] > bq.hi[1]) |
+                                 int(bq.lo[1] > bp.hi[1]) | int(bp.lo[2] > bq.hi[2]) | int(bq.lo[2] > bp.hi[2]);
                 if (skip) continue;  // apart even in the rounded-out boxes
-                const std::uint32_t i = ep.id & id_mask, j = eq.id & id_mask;
+                const std::uint32_t i = slot_id_[sp & slot_mask], j = slot_id_[sq & slot_mask];
                 pairs.push_back({std::min(i, j), std::max(i, j)});
             }
         }
@@ -375,10 +377,12 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
     entry_count_ = 0;
     const std::size_t m = boxes.ids.size();
     if (m < 2) return;
-    if (boxes.ids.back() > id_mask) throw std::length_error("broad phase: a particle index of 2^28 or more");
+    if (boxes.ids.size() > slot_mask) throw std::length_error("broad phase: 2^28 or more particles");
     threads_ = threads;
     boxes_ = &boxes;
     reuse_or_reset_order(boxes);
+    slot_id_.swap(order_);  // entered in the last call's order; the scan makes the next one
+    slot_box_.resize(m);
     const std::size_t tasks = range_tasks(m, threads);
     if (parts_.size() < tasks) parts_.resize(tasks);
     choose_cell(boxes, threads);
@@ -417,10 +421,12 @@ bool BroadPhase::near(const SweptBox& box, std::vector<std::uint32_t>& out) cons
         for (std::uint64_t y = lo[1]; y <= hi[1]; ++y) {
             const std::uint64_t first = linear(lo[0], y, z), last = linear(hi[0], y, z);
             const Entry* e = std::lower_bound(begin, end, first, [](const Entry& a, std::uint64_t c) { return a.cell < c; });
-            for (; e != end && e->cell <= last; ++e)
-                if (e->lo[0] <= hi_f[0] && lo_f[0] <= e->hi[0] && e->lo[1] <= hi_f[1] && lo_f[1] <= e->hi[1] &&
-                    e->lo[2] <= hi_f[2] && lo_f[2] <= e->hi[2])
-                    out.push_back(e->id & id_mask);
+            for (; e != end && e->cell <= last; ++e) {
+                const FloatBox& b = slot_box_[e->slot & slot_mask];
+                if (b.lo[0] <= hi_f[0] && lo_f[0] <= b.hi[0] && b.lo[1] <= hi_f[1] && lo_f[1] <= b.hi[1] &&
+                    b.lo[2] <= hi_f[2] && lo_f[2] <= b.hi[2])
+                    out.push_back(slot_id_[e->slot & slot_mask]);
+            }
         }
     out.insert(out.end(), big_.begin(), big_.end());
     return true;

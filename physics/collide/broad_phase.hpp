@@ -13,7 +13,9 @@
 // a pile), else LSD radix passes of 11-bit digits. The boxes are entered in the order of the last
 // call's cells (a particle moves a fraction of a cell in a step), so the pass writes the entries
 // almost in sequence instead of scattering them over memory; only the boxes are read out of
-// order (one 48-byte box per particle, fetched ahead).
+// order (one 48-byte box per particle, fetched ahead). An entry is 8 bytes, a cell and a slot
+// (the box's place in that order); the boxes, rounded out to floats, are written once per call
+// in slot order, where the scan reads a cell's boxes from the slots of nearby cells.
 //
 // The cell is a power of two times the median box, chosen from the last call's mean entries per
 // cell: a dilute gas gets cells several boxes wide (about one entry per particle and per cell), a
@@ -113,18 +115,22 @@ public:
     std::size_t entry_count() const { return entry_count_; }  // cell entries, last call
 
 private:
-    // A box entered in a cell, with the box in floats rounded outwards: a cell's entries are
-    // tested from consecutive memory, and only the pairs that pass read their exact boxes.
-    // 32 bytes: the sort moves little.
-    // In Entry::id: the particle is awake; the box starts in this cell along x, y, z (all three:
+    // A box entered in a cell: the cell, and the box's slot (its place in the order the boxes
+    // were entered in) with flags. 8 bytes: the sort moves little (at 3.4 entries a box, entries
+    // that carried their box made the sort and the scan move 110 bytes a particle).
+    // In Entry::slot: the particle is awake; the box starts in this cell along x, y, z (all three:
     // the cell of its low corner, its home).
     static constexpr std::uint32_t awake_bit = 0x80000000u;
     static constexpr std::uint32_t first_x_bit = 0x10000000u, first_y_bit = 0x20000000u, first_z_bit = 0x40000000u;
     static constexpr std::uint32_t home_bits = first_x_bit | first_y_bit | first_z_bit;
-    static constexpr std::uint32_t id_mask = first_x_bit - 1;
+    static constexpr std::uint32_t slot_mask = first_x_bit - 1;
     struct Entry {
         std::uint32_t cell;  // linear cell index
-        std::uint32_t id;    // the particle, with awake_bit and the first_*_bits
+        std::uint32_t slot;  // the box's slot, with awake_bit and the first_*_bits
+    };
+    // A box rounded out to floats, in its slot: the scan reads a cell's boxes from the slots of
+    // nearby home cells (the slots follow the last call's order of space), which the caches hold.
+    struct FloatBox {
         float lo[3], hi[3];
     };
     // One thread's share of the particles: the entries it made and the big ones it found.
@@ -167,8 +173,10 @@ private:
     const SweptBoxes* boxes_ = nullptr;     // during a call
     bool exact_ = true;                     // during a call
     // The ids in the order of their home cells at the last call, then the big ones: the next call
-    // enters the boxes in this order (for the ids it was made from, `ordered_ids_`).
-    std::vector<std::uint32_t> order_, ordered_ids_;
+    // enters the boxes in this order (for the ids it was made from, `ordered_ids_`), and the order
+    // they were entered in (slot -> id) with their boxes in floats.
+    std::vector<std::uint32_t> order_, ordered_ids_, slot_id_;
+    std::vector<FloatBox> slot_box_;
     std::vector<Part> parts_;               // per task of the build
     std::vector<Source> sources_;           // of the radix sort's pass
     std::vector<Entry> entries_, spare_;    // sorted by cell
