@@ -188,13 +188,19 @@ void BroadPhase::radix_pass(const std::vector<Source>& sources, Entry* out, int 
             for (const Entry* e = sources[t].begin; e != sources[t].end; ++e) ++count[(e->cell >> shift) & mask];
         });
     }
+    // In a single pass the digit is the whole cell: the starts of the cells are kept, for near().
+    const bool whole_cell = shift == 0 && passes_ == 1;
+    if (whole_cell) cell_start_.resize(std::size_t{mask} + 2);
     std::uint32_t next = 0;
-    for (std::size_t d = 0; d <= mask; ++d)
+    for (std::size_t d = 0; d <= mask; ++d) {
+        if (whole_cell) cell_start_[d] = next;
         for (std::size_t t = 0; t < tasks; ++t) {
             const std::uint32_t c = parts_[t].count[d];
             parts_[t].count[d] = next;
             next += c;
         }
+    }
+    if (whole_cell) cell_start_[std::size_t{mask} + 1] = next;
     run(tasks, [&](std::size_t t) {
         std::uint32_t* place = parts_[t].count.data();
         for (const Entry* e = sources[t].begin; e != sources[t].end; ++e) out[place[(e->cell >> shift) & mask]++] = *e;
@@ -399,8 +405,9 @@ void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, c
 }
 
 bool BroadPhase::near(const SweptBox& box, std::vector<std::uint32_t>& out) const {
-    // The cells of the box clamped to the grid (every entered box lies inside it), each cell's
-    // entries found by a binary search in the sorted entries: a few cells, each a short run.
+    // The cells of the box clamped to the grid (every entered box lies inside it), each row's
+    // entries found from the cells' starts (a one-pass sort), else by a binary search in the
+    // sorted entries: a few rows, each a short run.
     const std::uint64_t dims[3] = {stride_y_, stride_z_ / stride_y_, cell_count_ / stride_z_};
     float lo_f[3], hi_f[3];
     std::uint64_t lo[3], hi[3];
@@ -417,10 +424,11 @@ bool BroadPhase::near(const SweptBox& box, std::vector<std::uint32_t>& out) cons
     if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > max_cells) return false;
     const Entry* const begin = entries_.data();
     const Entry* const end = begin + entry_count_;
-    for (std::uint64_t z = lo[2]; z <= hi[2]; ++z)
+    for (std::uint64_t z = lo[2]; entry_count_ > 0 && z <= hi[2]; ++z)
         for (std::uint64_t y = lo[1]; y <= hi[1]; ++y) {
             const std::uint64_t first = linear(lo[0], y, z), last = linear(hi[0], y, z);
-            const Entry* e = std::lower_bound(begin, end, first, [](const Entry& a, std::uint64_t c) { return a.cell < c; });
+            const Entry* e = passes_ == 1 ? begin + cell_start_[first]
+                                          : std::lower_bound(begin, end, first, [](const Entry& a, std::uint64_t c) { return a.cell < c; });
             for (; e != end && e->cell <= last; ++e) {
                 const FloatBox& b = slot_box_[e->slot & slot_mask];
                 if (b.lo[0] <= hi_f[0] && lo_f[0] <= b.hi[0] && b.lo[1] <= hi_f[1] && lo_f[1] <= b.hi[1] &&

@@ -180,6 +180,7 @@ private:
     std::vector<Part> parts_;               // per task of the build
     std::vector<Source> sources_;           // of the radix sort's pass
     std::vector<Entry> entries_, spare_;    // sorted by cell
+    std::vector<std::uint32_t> cell_start_;  // each cell's first entry, when the sort took one pass
     std::vector<std::size_t> slice_start_;  // slice boundaries (at cell boundaries), when threaded
     std::vector<std::size_t> slice_cells_;
     std::vector<std::vector<Pair>> slice_pairs_;  // per slice, when threaded
