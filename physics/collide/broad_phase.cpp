@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 namespace pl::collide {
@@ -321,7 +322,12 @@ std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
     order_.clear();
     if (slices == 1) {
         const std::size_t cells = scan_cells(0, entry_count_, pairs, order_);
-        std::sort(pairs.begin(), pairs.end());
+        if (by_count(pairs.size())) {
+            merged_.swap(pairs);
+            count_sort({&merged_, 1}, pairs);
+        } else {
+            std::sort(pairs.begin(), pairs.end());
+        }
         return cells;
     }
     // Slices of about equal size, each starting at a cell's first entry.
@@ -339,15 +345,48 @@ std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
         slice_homes_[k].clear();
         slice_cells_[k] = scan_cells(slice_start_[k], std::max(slice_start_[k], slice_start_[k + 1]), slice_pairs_[k],
                                      slice_homes_[k]);
-        std::sort(slice_pairs_[k].begin(), slice_pairs_[k].end());  // each slice sorted on its thread
     });
-    std::size_t cells = 0;
+    std::size_t cells = 0, found = 0;
     for (std::size_t k = 0; k < slices; ++k) {
         cells += slice_cells_[k];
+        found += slice_pairs_[k].size();
         order_.insert(order_.end(), slice_homes_[k].begin(), slice_homes_[k].end());
     }
-    merge_slices(pairs);
+    if (by_count(found)) {
+        count_sort(slice_pairs_, pairs);
+    } else {
+        run(slices, [&](std::size_t k) { std::sort(slice_pairs_[k].begin(), slice_pairs_[k].end()); });
+        merge_slices(pairs);
+    }
     return cells;
+}
+
+bool BroadPhase::by_count(std::size_t pairs) const {
+    // A counting sort's histogram has a bin per particle index: worth it unless the pairs are
+    // much fewer than the particles.
+    return 8 * pairs >= boxes_->box.size();
+}
+
+void BroadPhase::count_sort(std::span<const std::vector<Pair>> sources, std::vector<Pair>& pairs) {
+    // By a counting sort on a (one pass over the pairs, stable), then each run of one a put in
+    // order of b by insertion (a particle has a few pairs at most: the runs are short). The
+    // comparison sort of the slices and their merge took a third of the gas's grid run.
+    start_.assign(boxes_->box.size() + 1, 0);
+    std::size_t total = 0;
+    for (const std::vector<Pair>& source : sources) {
+        total += source.size();
+        for (const Pair& p : source) ++start_[p.a + 1];
+    }
+    for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
+    pairs.resize(total);
+    for (const std::vector<Pair>& source : sources)
+        for (const Pair& p : source) pairs[start_[p.a]++] = p;
+    for (std::size_t k = 1; k < total; ++k) {
+        const Pair p = pairs[k];
+        std::size_t j = k;
+        for (; j > 0 && p < pairs[j - 1]; --j) pairs[j] = pairs[j - 1];
+        pairs[j] = p;
+    }
 }
 
 void BroadPhase::merge_slices(std::vector<Pair>& pairs) {

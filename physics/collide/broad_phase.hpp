@@ -30,6 +30,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace pl::collide {
@@ -156,6 +157,8 @@ private:
     void keep_exact(std::vector<Pair>& pairs, std::size_t from) const;
     std::size_t scan(std::vector<Pair>& pairs, std::size_t threads);
     void merge_slices(std::vector<Pair>& pairs);
+    bool by_count(std::size_t pairs) const;
+    void count_sort(std::span<const std::vector<Pair>> sources, std::vector<Pair>& pairs);
     void pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const;
     void adapt_cell(std::size_t cells);
     template <class Task>
@@ -187,6 +190,7 @@ private:
     std::vector<std::vector<std::uint32_t>> slice_homes_;
     std::vector<std::size_t> run_end_;            // the merge's sorted runs
     std::vector<Pair> merged_;
+    std::vector<std::uint32_t> start_;  // the counting sort's histogram, a bin per particle index
 };
 
 // The reference: every pair tested, O(n^2).
