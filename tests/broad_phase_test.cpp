@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace pl::collide {
@@ -177,6 +178,51 @@ TEST(BroadPhase, VastRoomAndSharedCorners) {
         lattice.ids.push_back(i);
     }
     expect_same_pairs(lattice, 3 * 7 * 64);
+}
+
+TEST(BroadPhase, NearFindsEveryBoxAQueryMeets) {
+    // After a call, near() lists (at least) every particle whose box meets the query box: in a
+    // crowd, where the sort takes one pass and each row of cells is found from the cells'
+    // starts, and in a vast room, where it takes several and each row is searched for. A query
+    // spanning too many cells is refused; after a call with one box there is nothing to find.
+    for (const double side : {1.0, 1000.0}) {
+        const SweptBoxes boxes = random_boxes(3000, side, 0.005, 0.02, 0.01, 11);
+        BroadPhase grid;
+        std::vector<Pair> pairs;
+        grid.find_pairs(boxes, pairs);
+        std::mt19937 rng(12);
+        std::uniform_int_distribution<std::uint32_t> pick(0, 2999);
+        std::size_t met = 0;
+        for (int query = 0; query < 300; ++query) {
+            SweptBox q = boxes.box[pick(rng)];
+            for (int k = 0; k < 3; ++k) q.hi[k] += 0.02;  // wider than its own box
+            std::vector<std::uint32_t> near;
+            ASSERT_TRUE(grid.near(q, near));
+            std::sort(near.begin(), near.end());
+            for (const std::uint32_t j : boxes.ids) {
+                if (!overlap(q, boxes.box[j])) continue;
+                ++met;
+                EXPECT_TRUE(std::binary_search(near.begin(), near.end(), j)) << "side " << side << " particle " << j;
+            }
+        }
+        EXPECT_GE(met, side < 10.0 ? 500u : 300u) << "side " << side;  // in the crowd, boxes meet others
+        SweptBox huge;  // the whole room
+        for (int k = 0; k < 3; ++k) {
+            huge.lo[k] = -side;
+            huge.hi[k] = side;
+        }
+        std::vector<std::uint32_t> near;
+        EXPECT_FALSE(grid.near(huge, near)) << "side " << side << " cell " << grid.cell_size();
+        EXPECT_TRUE(near.empty());
+    }
+    SweptBoxes one = random_boxes(1, 1.0, 0.01, 0.01, 0.0, 13);
+    BroadPhase grid;
+    std::vector<Pair> pairs;
+    grid.find_pairs(random_boxes(3000, 1.0, 0.005, 0.02, 0.01, 11), pairs);
+    grid.find_pairs(one, pairs);
+    std::vector<std::uint32_t> near;
+    EXPECT_TRUE(grid.near(one.box[0], near));
+    EXPECT_TRUE(near.empty());
 }
 
 }  // namespace
