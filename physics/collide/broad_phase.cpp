@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <span>
 #include <stdexcept>
 
 namespace pl::collide {
@@ -258,12 +257,10 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
                 const FloatBox& bq = slot_box_[sq & slot_mask];
                 // The cell reports the pair when, along each axis, one of the two boxes starts
                 // in it: it is then the low corner of the cells they share, met once per pair.
-                // One branch for all of it (a fat box passes a test about as often as not: each
-                // branch of its own would be mispredicted half the time).
+                // One branch for all of it.
                 const std::uint32_t both = sp | sq;
                 const int skip = int((both & (awake_bit | home_bits)) != (awake_bit | home_bits)) |  // or both asleep
-                                 int(bp.lo[0] > bq.hi[0]) | int(bq.lo[0] > bp.hi[0]) | int(bp.lo[1] > bq.hi[1]) |
-                                 int(bq.lo[1] > bp.hi[1]) | int(bp.lo[2] > bq.hi[2]) | int(bq.lo[2] > bp.hi[2]);
+                                 apart(bp, bq);
                 if (skip) continue;  // apart even in the rounded-out boxes
                 const std::uint32_t i = slot_id_[sp & slot_mask], j = slot_id_[sq & slot_mask];
                 pairs.push_back({std::min(i, j), std::max(i, j)});
@@ -361,59 +358,6 @@ std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
     return cells;
 }
 
-bool BroadPhase::by_count(std::size_t pairs) const {
-    // A counting sort's histogram has a bin per particle index: worth it unless the pairs are
-    // much fewer than the particles.
-    return 8 * pairs >= boxes_->box.size();
-}
-
-void BroadPhase::count_sort(std::span<const std::vector<Pair>> sources, std::vector<Pair>& pairs) {
-    // By a counting sort on a (one pass over the pairs, stable), then each run of one a put in
-    // order of b by insertion (a particle has a few pairs at most: the runs are short). The
-    // comparison sort of the slices and their merge took a third of the gas's grid run.
-    start_.assign(boxes_->box.size() + 1, 0);
-    std::size_t total = 0;
-    for (const std::vector<Pair>& source : sources) {
-        total += source.size();
-        for (const Pair& p : source) ++start_[p.a + 1];
-    }
-    for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
-    pairs.resize(total);
-    for (const std::vector<Pair>& source : sources)
-        for (const Pair& p : source) pairs[start_[p.a]++] = p;
-    for (std::size_t k = 1; k < total; ++k) {
-        const Pair p = pairs[k];
-        std::size_t j = k;
-        for (; j > 0 && p < pairs[j - 1]; --j) pairs[j] = pairs[j - 1];
-        pairs[j] = p;
-    }
-}
-
-void BroadPhase::merge_slices(std::vector<Pair>& pairs) {
-    // The sorted slices merged two by two (log2 of the slices passes over the pairs, instead of
-    // sorting them all on one thread).
-    run_end_.clear();
-    pairs.clear();
-    for (const std::vector<Pair>& slice : slice_pairs_) {
-        pairs.insert(pairs.end(), slice.begin(), slice.end());
-        run_end_.push_back(pairs.size());
-    }
-    while (run_end_.size() > 1) {
-        merged_.resize(pairs.size());
-        std::size_t begin = 0, kept = 0;
-        for (std::size_t r = 0; r < run_end_.size(); r += 2) {
-            const std::size_t middle = run_end_[r], end = r + 1 < run_end_.size() ? run_end_[r + 1] : middle;
-            std::merge(pairs.begin() + static_cast<std::ptrdiff_t>(begin), pairs.begin() + static_cast<std::ptrdiff_t>(middle),
-                       pairs.begin() + static_cast<std::ptrdiff_t>(middle), pairs.begin() + static_cast<std::ptrdiff_t>(end),
-                       merged_.begin() + static_cast<std::ptrdiff_t>(begin));
-            run_end_[kept++] = end;
-            begin = end;
-        }
-        run_end_.resize(kept);
-        pairs.swap(merged_);
-    }
-}
-
 void BroadPhase::find_pairs(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
                             std::size_t threads, bool exact) {
     exact_ = exact;
@@ -448,14 +392,14 @@ bool BroadPhase::near(const SweptBox& box, std::vector<std::uint32_t>& out) cons
     // entries found from the cells' starts (a one-pass sort), else by a binary search in the
     // sorted entries: a few rows, each a short run.
     const std::uint64_t dims[3] = {stride_y_, stride_z_ / stride_y_, cell_count_ / stride_z_};
-    float lo_f[3], hi_f[3];
+    FloatBox query;
     std::uint64_t lo[3], hi[3];
     for (int k = 0; k < 3; ++k) {
-        lo_f[k] = below(box.lo[k]);
-        hi_f[k] = above(box.hi[k]);
+        query.lo[k] = below(box.lo[k]);
+        query.hi[k] = above(box.hi[k]);
         const double top = static_cast<double>(dims[k] - 1);
-        const double from = std::clamp((lo_f[k] - origin_[k]) * inverse_cell_, 0.0, top);
-        const double to = std::clamp((hi_f[k] - origin_[k]) * inverse_cell_, 0.0, top);
+        const double from = std::clamp((query.lo[k] - origin_[k]) * inverse_cell_, 0.0, top);
+        const double to = std::clamp((query.hi[k] - origin_[k]) * inverse_cell_, 0.0, top);
         if (!(from <= to)) return false;  // not finite
         lo[k] = static_cast<std::uint64_t>(from);
         hi[k] = static_cast<std::uint64_t>(to);
@@ -468,12 +412,8 @@ bool BroadPhase::near(const SweptBox& box, std::vector<std::uint32_t>& out) cons
             const std::uint64_t first = linear(lo[0], y, z), last = linear(hi[0], y, z);
             const Entry* e = passes_ == 1 ? begin + cell_start_[first]
                                           : std::lower_bound(begin, end, first, [](const Entry& a, std::uint64_t c) { return a.cell < c; });
-            for (; e != end && e->cell <= last; ++e) {
-                const FloatBox& b = slot_box_[e->slot & slot_mask];
-                if (b.lo[0] <= hi_f[0] && lo_f[0] <= b.hi[0] && b.lo[1] <= hi_f[1] && lo_f[1] <= b.hi[1] &&
-                    b.lo[2] <= hi_f[2] && lo_f[2] <= b.hi[2])
-                    out.push_back(slot_id_[e->slot & slot_mask]);
-            }
+            for (; e != end && e->cell <= last; ++e)
+                if (!apart(query, slot_box_[e->slot & slot_mask])) out.push_back(slot_id_[e->slot & slot_mask]);
         }
     out.insert(out.end(), big_.begin(), big_.end());
     return true;
