@@ -31,7 +31,10 @@ inline Rgba series_color(int index) {
     }};
     if (index < 0) index = 0;
     if (index < static_cast<int>(base.size())) return base[static_cast<std::size_t>(index)];
-    const double hue = std::fmod(0.618033988749895 * index, 1.0) * 6.0;  // sector 0..6
+    // The fractional part by floor, not std::fmod: the same exact value (x - floor(x) is exact for
+    // x >= 0), at a fraction of fmod's cost, which the 3D view pays once per particle per frame.
+    const double turns = 0.618033988749895 * index;
+    const double hue = (turns - std::floor(turns)) * 6.0;  // sector 0..6
     const double s = 0.55, v = 0.95;
     const double f = hue - std::floor(hue);
     const auto p = static_cast<float>(v * (1 - s)), q = static_cast<float>(v * (1 - s * f)),

@@ -173,7 +173,8 @@ private:
     // is the last frame.
     // `frame_dt`: the real time since the last frame.
     bool session_frame(bool quitting, double frame_dt);
-    void draw(const ShellLayout& layout, const FramebufferMapping& fb, int fb_w, int fb_h);
+    void draw(const ShellLayout& layout, const FramebufferMapping& fb);
+    void present(int fb_w, int fb_h);
 
     ui::LabSession& session_;
     const GuiOptions& options_;
@@ -196,6 +197,8 @@ private:
     ViewDrag drag_;
     std::string title_;
     long frames_ = 0;
+    int fb_w_ = 0, fb_h_ = 0;  // the framebuffer size draw() planned for
+    bool drawn_ = true;        // present() has run since the last draw()
     std::vector<ViewPane> shown_panes_;  // the last frame's, for the state dump
     RecordControl record_;
     Clock::time_point last_ = Clock::now();
@@ -237,7 +240,12 @@ bool FrameLoop::session_frame(bool quitting, double frame_dt) {
     ui::record_frame(session);
     follow_room(view_, session);
 
-    draw(layout, fb, fb_w, fb_h);
+    draw(layout, fb);
+    // Pixels read back this frame (a recording, a screenshot) need the scene drawn first; any
+    // other frame draws it after the mutex is released (FrameLoop::frame).
+    if (record_.recorder.active() || session.requests.screenshot || options_.screenshot) present(fb_w, fb_h);
+    fb_w_ = fb_w;
+    fb_h_ = fb_h;
     ++frames_;
     const bool record_over = end_record_frame(record_, session, fb_w, fb_h);
     const bool last_frame = quitting || record_over || (options_.frames && frames_ >= *options_.frames);
@@ -258,9 +266,9 @@ bool FrameLoop::session_frame(bool quitting, double frame_dt) {
     return last_frame;
 }
 
-// Panels, then the 3D view's overlays and input (the view is the space between panels), the
-// scene and ImGui's draw lists.
-void FrameLoop::draw(const ShellLayout& layout, const FramebufferMapping& fb, int fb_w, int fb_h) {
+// Panels, then the 3D view's overlays and input (the view is the space between panels), and
+// what the scene's GL calls will need: everything that reads the session, none of the drawing.
+void FrameLoop::draw(const ShellLayout& layout, const FramebufferMapping& fb) {
     ui::LabSession& session = session_;
     apply_view_command(draw_shell_windows(session, layout, collapsed_, record_), view_, session);
     const std::size_t variant_count = session.experiment ? session.experiment->variant_count() : 1;
@@ -274,11 +282,20 @@ void FrameLoop::draw(const ShellLayout& layout, const FramebufferMapping& fb, in
     if (hovered) show_particle_tooltip(session, hovered->particle);
     ui::draw_popups(session);
 
+    renderer_->prepare(session, trails_, panes, view_.camera, fb);
+    shown_panes_ = panes;
+    drawn_ = false;
+}
+
+// The scene and ImGui's draw lists, from what draw() kept: no session state, so it runs without
+// the physics thread's mutex (a software rasteriser spends milliseconds in its draw calls).
+void FrameLoop::present(int fb_w, int fb_h) {
+    if (drawn_) return;
+    drawn_ = true;
     glViewport(0, 0, fb_w, fb_h);
     glClearColor(0.085f, 0.093f, 0.11f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    renderer_->draw(session, trails_, panes, view_.camera, fb);
-    shown_panes_ = panes;
+    renderer_->submit();
     imgui_->render();
 }
 
@@ -301,7 +318,8 @@ bool FrameLoop::frame() {
         waited_s = std::chrono::duration<double>(Clock::now() - asked).count();
         last_frame = session_frame(quitting, frame_dt);
     }
-    // Presenting (where a software rasteriser does most of its work) runs without the mutex.
+    // Drawing and presenting (where a software rasteriser does its work) run without the mutex.
+    present(fb_w_, fb_h_);
     glfwSwapBuffers(window_.handle());
     const double spent = std::chrono::duration<double>(Clock::now() - start).count();
     session_.frame.render_ms = 1e3 * (spent - waited_s);  // shown by the next frame's status bar

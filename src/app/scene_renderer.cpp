@@ -38,97 +38,99 @@ void build_instances(const Experiment& e, std::optional<std::size_t> only_varian
 
 SceneRenderer::SceneRenderer() : spheres_(instances_), points_(instances_), shadows_(instances_) {}
 
-void SceneRenderer::draw(const ui::LabSession& session, const TrailHistory& trails, const std::vector<ViewPane>& panes,
-                         const OrbitCamera& camera, const FramebufferMapping& fb) {
+LineSegments& SceneRenderer::PanePlan::add_overlay(float width_px, bool through_balls) {
+    if (overlay_count == overlays.size()) overlays.emplace_back();
+    LineBatch& batch = overlays[overlay_count++];
+    batch.segments.clear();
+    batch.width_px = width_px;
+    batch.through_balls = through_balls;
+    return batch.segments;
+}
+
+void SceneRenderer::prepare(const ui::LabSession& session, const TrailHistory& trails, const std::vector<ViewPane>& panes,
+                            const OrbitCamera& camera, const FramebufferMapping& fb) {
+    plan_count_ = 0;
     if (!session.experiment) return;
+    if (plans_.size() < panes.size()) plans_.resize(panes.size());
+    for (const ViewPane& pane : panes)
+        if (prepare_pane(session, trails, pane, camera, fb, plans_[plan_count_])) ++plan_count_;
+}
+
+void SceneRenderer::submit() {
+    if (plan_count_ == 0) return;
     glEnable(GL_SCISSOR_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
-    for (const ViewPane& pane : panes) draw_pane(session, trails, pane, camera, fb);
+    for (std::size_t i = 0; i < plan_count_; ++i) submit_pane(plans_[i]);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
 }
 
-void SceneRenderer::draw_pane(const ui::LabSession& session, const TrailHistory& trails, const ViewPane& pane,
-                              const OrbitCamera& camera, const FramebufferMapping& fb) {
+// False when the pane has no pixels (nothing to draw).
+bool SceneRenderer::prepare_pane(const ui::LabSession& session, const TrailHistory& trails, const ViewPane& pane,
+                                 const OrbitCamera& camera, const FramebufferMapping& fb, PanePlan& plan) {
     const Experiment& e = *session.experiment;
-    const Room& room = e.scene().room;
     // ImGui's origin is top-left, GL's bottom-left.
-    const auto x = static_cast<GLint>(std::lround(pane.rect.x * fb.scale_x));
-    const auto w = static_cast<GLsizei>(std::lround(pane.rect.w * fb.scale_x));
-    const auto h = static_cast<GLsizei>(std::lround(pane.rect.h * fb.scale_y));
-    const auto y = static_cast<GLint>(fb.height - std::lround(pane.rect.bottom() * fb.scale_y));
-    if (w <= 0 || h <= 0) return;
-    glViewport(x, y, w, h);
-    glScissor(x, y, w, h);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    const glm::vec2 viewport(static_cast<float>(w), static_cast<float>(h));
-    const CameraMatrices cam = camera_matrices(camera, viewport.x / viewport.y);
+    plan.x = static_cast<GLint>(std::lround(pane.rect.x * fb.scale_x));
+    plan.w = static_cast<GLsizei>(std::lround(pane.rect.w * fb.scale_x));
+    plan.h = static_cast<GLsizei>(std::lround(pane.rect.h * fb.scale_y));
+    plan.y = static_cast<GLint>(fb.height - std::lround(pane.rect.bottom() * fb.scale_y));
+    if (plan.w <= 0 || plan.h <= 0) return false;
+    plan.cam = camera_matrices(camera, static_cast<float>(plan.w) / static_cast<float>(plan.h));
+    plan.min_radius_per_depth = min_sphere_radius_px * pixel_size_at_unit_depth(camera, static_cast<float>(plan.h));
+    plan.room = e.scene().room;
+    plan.floor_grid.segments.clear();
+    RoomRenderer::append_floor_grid(plan.room, plan.floor_grid.segments);
+    build_instances(e, pane.variant, session.tint_sleeping, plan.instances);
+
+    plan.overlay_count = 0;
     const glm::vec3 view_dir = camera_forward(camera);
-    const float min_radius_per_depth = min_sphere_radius_px * pixel_size_at_unit_depth(camera, viewport.y);
-
-    background_.draw();
-    room_.draw_walls(room, cam);
-
-    glDepthMask(GL_FALSE);
-    segments_.clear();
-    RoomRenderer::append_floor_grid(room, segments_);
-    lines_.draw(segments_, cam.view_proj, viewport, 1.0f);
-
-    build_instances(e, pane.variant, session.tint_sleeping, instance_scratch_);
-    instances_.upload(instance_scratch_);
-    const bool many = instance_scratch_.size() > max_mesh_spheres;
-    if (!many)
-        shadows_.draw(cam, static_cast<float>(room.floor_y()) + 1e-4f * static_cast<float>(room.size.y), min_radius_per_depth);
-    glDepthMask(GL_TRUE);
-    if (many) points_.draw(cam, viewport.y);
-    else spheres_.draw(cam, min_radius_per_depth);
-
-    glDepthMask(GL_FALSE);
     const auto selected = static_cast<std::size_t>(std::max(session.selected_particle, 0));
     const auto trail_particles = static_cast<std::size_t>(std::max(session.trail_particles, 0));
-    if (session.show_trails) {
-        segments_.clear();
-        append_trails(trails, e, pane.variant, selected, trail_particles, segments_);
-        lines_.draw(segments_, cam.view_proj, viewport, 2.0f);
-    }
-    segments_.clear();
-    append_drop_lines(e, pane.variant, selected, trail_particles, segments_);
-    lines_.draw(segments_, cam.view_proj, viewport, 1.0f);
-    if (const ui::PinBoard* pins = ui::pins_if_any(session); pins && !pins->runs.empty()) {
-        segments_.clear();
-        append_pinned_paths(*pins, segments_);
-        lines_.draw(segments_, cam.view_proj, viewport, 1.5f);
-    }
-    if (session.show_velocity) {
-        segments_.clear();
-        append_velocity_arrows(e, pane.variant, view_dir, segments_);
-        lines_.draw(segments_, cam.view_proj, viewport, 1.6f);
-    }
+    if (session.show_trails) append_trails(trails, e, pane.variant, selected, trail_particles, plan.add_overlay(2.0f));
+    append_drop_lines(e, pane.variant, selected, trail_particles, plan.add_overlay(1.0f));
+    if (const ui::PinBoard* pins = ui::pins_if_any(session); pins && !pins->runs.empty())
+        append_pinned_paths(*pins, plan.add_overlay(1.5f));
+    if (session.show_velocity) append_velocity_arrows(e, pane.variant, view_dir, plan.add_overlay(1.6f));
     if (session.show_wind) {
-        segments_.clear();
-        const auto selected = static_cast<std::size_t>(std::max(session.selected_variant, 0));
-        if (const auto variant = wind_variant_to_show(e, pane.variant, selected))
-            append_wind_arrows(e, *variant, view_dir, segments_);
-        lines_.draw(segments_, cam.view_proj, viewport, 1.4f);
+        const auto variant_selected = static_cast<std::size_t>(std::max(session.selected_variant, 0));
+        LineSegments& arrows = plan.add_overlay(1.4f);
+        if (const auto variant = wind_variant_to_show(e, pane.variant, variant_selected))
+            append_wind_arrows(e, *variant, view_dir, arrows);
     }
-    if (session.show_contacts) draw_contacts(e, pane, cam, viewport);
-    segments_.clear();
-    RoomRenderer::append_edges(room, segments_);
-    lines_.draw(segments_, cam.view_proj, viewport, 1.5f);
-    glDepthMask(GL_TRUE);
+    if (session.show_contacts) append_contacts(e, pane.variant, plan.add_overlay(1.5f, true));
+    RoomRenderer::append_edges(plan.room, plan.add_overlay(1.5f));
+    return true;
 }
 
-// Through the balls (a contact's line lies inside its two spheres, so the depth test would hide
-// it): one batched draw of the pane's loaded contacts.
-void SceneRenderer::draw_contacts(const Experiment& e, const ViewPane& pane, const CameraMatrices& cam, glm::vec2 viewport) {
-    segments_.clear();
-    if (append_contacts(e, pane.variant, segments_) == 0) return;
-    glDisable(GL_DEPTH_TEST);
-    lines_.draw(segments_, cam.view_proj, viewport, 1.5f);
-    glEnable(GL_DEPTH_TEST);
+void SceneRenderer::draw_lines(const LineBatch& batch, const PanePlan& plan) {
+    if (batch.through_balls) glDisable(GL_DEPTH_TEST);
+    lines_.draw(batch.segments, plan.cam.view_proj, plan.viewport(), batch.width_px);
+    if (batch.through_balls) glEnable(GL_DEPTH_TEST);
+}
+
+void SceneRenderer::submit_pane(const PanePlan& plan) {
+    glViewport(plan.x, plan.y, plan.w, plan.h);
+    glScissor(plan.x, plan.y, plan.w, plan.h);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    background_.draw();
+    room_.draw_walls(plan.room, plan.cam);
+
+    glDepthMask(GL_FALSE);
+    draw_lines(plan.floor_grid, plan);
+    instances_.upload(plan.instances);
+    if (!plan.many())
+        shadows_.draw(plan.cam, static_cast<float>(plan.room.floor_y()) + 1e-4f * static_cast<float>(plan.room.size.y),
+                      plan.min_radius_per_depth);
+    glDepthMask(GL_TRUE);
+    if (plan.many()) points_.draw(plan.cam, plan.viewport().y);
+    else spheres_.draw(plan.cam, plan.min_radius_per_depth);
+
+    glDepthMask(GL_FALSE);
+    for (std::size_t i = 0; i < plan.overlay_count; ++i) draw_lines(plan.overlays[i], plan);
+    glDepthMask(GL_TRUE);
 }
 
 }  // namespace pl::app
