@@ -14,6 +14,31 @@ struct Rgb {
     float r, g, b;
 };
 
+// The hue of series `index` beyond the first ten, as a sector 0..6 of the colour wheel: the
+// golden angle times the index, modulo a turn. The fractional part by floor, not std::fmod: the
+// same exact value (x - floor(x) is exact for x >= 0) at a fraction of fmod's cost, which the 3D
+// view pays once per particle per frame.
+inline double golden_hue_sector(int index) {
+    const double turns = 0.618033988749895 * index;
+    return (turns - std::floor(turns)) * 6.0;
+}
+
+// HSV to RGB at saturation 0.55, value 0.95 (light enough on a dark background).
+inline Rgba light_color_of_hue(double sector) {
+    const double s = 0.55, v = 0.95;
+    const double f = sector - std::floor(sector);
+    const auto p = static_cast<float>(v * (1 - s)), q = static_cast<float>(v * (1 - s * f)),
+               t = static_cast<float>(v * (1 - s * (1 - f))), w = static_cast<float>(v);
+    switch (static_cast<int>(sector) % 6) {
+        case 0: return {w, t, p, 1.0f};
+        case 1: return {q, w, p, 1.0f};
+        case 2: return {p, w, t, 1.0f};
+        case 3: return {p, q, w, 1.0f};
+        case 4: return {t, p, w, 1.0f};
+        default: return {w, p, q, 1.0f};
+    }
+}
+
 // Distinct on a dark background: the Tableau 10 hues, lightened a little. Beyond ten series the
 // hue advances by the golden angle, which keeps neighbours apart however many there are.
 inline Rgba series_color(int index) {
@@ -31,22 +56,7 @@ inline Rgba series_color(int index) {
     }};
     if (index < 0) index = 0;
     if (index < static_cast<int>(base.size())) return base[static_cast<std::size_t>(index)];
-    // The fractional part by floor, not std::fmod: the same exact value (x - floor(x) is exact for
-    // x >= 0), at a fraction of fmod's cost, which the 3D view pays once per particle per frame.
-    const double turns = 0.618033988749895 * index;
-    const double hue = (turns - std::floor(turns)) * 6.0;  // sector 0..6
-    const double s = 0.55, v = 0.95;
-    const double f = hue - std::floor(hue);
-    const auto p = static_cast<float>(v * (1 - s)), q = static_cast<float>(v * (1 - s * f)),
-               t = static_cast<float>(v * (1 - s * (1 - f))), w = static_cast<float>(v);
-    switch (static_cast<int>(hue) % 6) {
-        case 0: return {w, t, p, 1.0f};
-        case 1: return {q, w, p, 1.0f};
-        case 2: return {p, w, t, 1.0f};
-        case 3: return {p, q, w, 1.0f};
-        case 4: return {t, p, w, 1.0f};
-        default: return {w, p, q, 1.0f};
-    }
+    return light_color_of_hue(golden_hue_sector(index));
 }
 
 // Which palette entry a particle of a variant uses: with several variants the variant decides

@@ -12,29 +12,23 @@
 namespace pl::ui {
 namespace {
 
-// The hue sector the palette uses, as it was first written (std::fmod).
-double hue_by_fmod(int index) { return std::fmod(0.618033988749895 * index, 1.0) * 6.0; }
-
-// The same HSV-to-RGB conversion with the fmod hue, for comparison.
-Rgba color_by_fmod(int index) {
-    const double hue = hue_by_fmod(index);
-    const double s = 0.55, v = 0.95;
-    const double f = hue - std::floor(hue);
-    const auto p = static_cast<float>(v * (1 - s)), q = static_cast<float>(v * (1 - s * f)),
-               t = static_cast<float>(v * (1 - s * (1 - f))), w = static_cast<float>(v);
-    switch (static_cast<int>(hue) % 6) {
-        case 0: return {w, t, p, 1.0f};
-        case 1: return {q, w, p, 1.0f};
-        case 2: return {p, w, t, 1.0f};
-        case 3: return {p, q, w, 1.0f};
-        case 4: return {t, p, w, 1.0f};
-        default: return {w, p, q, 1.0f};
+TEST(Palette, GoldenAngleHuesEqualTheFmodFormulaForEveryIndexUpToTenMillion) {
+    for (int index = 10; index < 10'000'000; index += (index < 100'000 ? 1 : 997)) {
+        const double by_fmod = std::fmod(0.618033988749895 * index, 1.0) * 6.0;
+        ASSERT_EQ(golden_hue_sector(index), by_fmod) << "index " << index;
+        ASSERT_EQ(series_color(index), light_color_of_hue(by_fmod)) << "index " << index;
     }
 }
 
-TEST(Palette, GoldenAngleHuesEqualTheFmodFormulaForEveryIndexUpToTenMillion) {
-    for (int index = 10; index < 10'000'000; index += (index < 100'000 ? 1 : 997))
-        ASSERT_EQ(series_color(index), color_by_fmod(index)) << "index " << index;
+TEST(Palette, HueSectorsGoRoundTheWheel) {
+    // Red at 0, yellow at 1, green at 2, cyan at 3, blue at 4, magenta at 5 (lightened).
+    const float hi = 0.95f, lo = static_cast<float>(0.95 * 0.45);
+    EXPECT_EQ(light_color_of_hue(0.0), (Rgba{hi, lo, lo, 1.0f}));
+    EXPECT_EQ(light_color_of_hue(2.0), (Rgba{lo, hi, lo, 1.0f}));
+    EXPECT_EQ(light_color_of_hue(4.0), (Rgba{lo, lo, hi, 1.0f}));
+    const Rgba yellow = light_color_of_hue(1.0);
+    EXPECT_FLOAT_EQ(yellow[0], hi);
+    EXPECT_FLOAT_EQ(yellow[1], hi);
 }
 
 TEST(Palette, NeighbouringSeriesHaveDistinctColours) {
