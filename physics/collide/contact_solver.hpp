@@ -100,6 +100,7 @@ private:
     static void wall_contacts(const ParticleState& s, const Model& m, std::uint32_t i,
                               const std::vector<std::uint8_t>& asleep, double h, double impact, bool spin,
                               std::vector<SolverContact>& out);
+    void sort_bodies(std::size_t particles);  // bodies_ in index order, in_body_ cleared
     void keep_sleeping(const std::vector<std::uint8_t>& asleep);
     void warm_start();
     void place_bodies(const std::vector<std::uint32_t>& space_order);
