@@ -152,3 +152,34 @@ TEST(Collision, RestingBallStruckOnTheFloorMoves) {
 
 }  // namespace
 }  // namespace pl
+
+namespace pl {
+namespace {
+
+// Two balls whose centres coincide have no normal between them. They must still be opened, as
+// any overlap is: along "up" (against gravity, +y without it), the lower index below, by the
+// overlap pass alone (positions, inverse-mass weighted: the centre of mass stays put, no
+// velocity appears). Before, the pass skipped them and they stayed one inside the other.
+TEST(Collision, ConcentricBallsAreOpenedAgainstGravity) {
+    for (const Vec3 g : {Vec3(0.0), Vec3(9.81, 0, 0)}) {
+        Model m = free_space(0.5);
+        m.world.gravity = g;
+        const double ma = 0.1, mb = 0.3, r = 0.05;
+        Simulation sim(m, {ball({0, 0, 0}, {0, 0, 0}, ma, r), ball({0, 0, 0}, {0, 0, 0}, mb, r)});
+        sim.run_until(0.05);  // the pair is opened within ~15 steps; gravity moves both alike meanwhile
+        const Vec3 d = sim.state().position(1) - sim.state().position(0);
+        EXPECT_NEAR(glm::length(d), 2 * r, 0.01 * r) << "gravity " << g.x;
+        const Vec3 up = g == Vec3(0.0) ? Vec3(0, 1, 0) : -glm::normalize(g);
+        EXPECT_NEAR(glm::dot(d, up), glm::length(d), 1e-12) << "opened along up, b above a";
+        // The same displacement for both under gravity: relative to the free fall (semi-implicit
+        // Euler's, g dt^2 n (n + 1) / 2 after n steps), the centre of mass did not move, and
+        // neither ball picked up a relative velocity.
+        const Vec3 fall = 0.5 * g * sim.time() * (sim.time() + m.integrator.dt);
+        const Vec3 centre = (ma * sim.state().position(0) + mb * sim.state().position(1)) / (ma + mb);
+        EXPECT_NEAR(glm::length(centre - fall), 0.0, 1e-9);
+        EXPECT_NEAR(glm::length(sim.state().velocity(1) - sim.state().velocity(0)), 0.0, 1e-12);
+    }
+}
+
+}  // namespace
+}  // namespace pl

@@ -148,6 +148,10 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
     // Inverse-mass weighted positional correction (Catto's "split impulse" idea without the
     // velocity: only positions move), a bounded share of each overlap per step, in pair order.
     // Sleeping pairs stay where they are. The potential energy a move gives is contact work.
+    // Concentric centres (two balls placed at one point) have no normal: they are opened "up",
+    // against gravity (+y without it), b above a, as a ball put on top of another would rest.
+    const double g = glm::length(m.world.gravity);
+    const Vec3 up = g > 0.0 ? -m.world.gravity / g : Vec3(0.0, 1.0, 0.0);
     const std::vector<std::uint8_t>& asleep = islands_.asleep();
     for (const Pair& p : pairs_) {
         if (asleep[p.a] && asleep[p.b]) continue;
@@ -155,10 +159,10 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
         const double contact = s.radius[p.a] + s.radius[p.b];
         const double len = glm::length(d);
         const double overlap = contact - len - allowed_overlap * contact;
-        if (!(overlap > 0.0) || !(len > 0.0)) continue;
+        if (!(overlap > 0.0)) continue;
         const double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
         const double correction = std::min(correction_share * overlap, max_correction * contact);
-        const Vec3 push = (correction / (len * (inv_a + inv_b))) * d;
+        const Vec3 push = len > 0.0 ? (correction / (len * (inv_a + inv_b))) * d : (correction / (inv_a + inv_b)) * up;
         move_to(s, m, p.a, s.position(p.a) - inv_a * push);
         move_to(s, m, p.b, s.position(p.b) + inv_b * push);
     }

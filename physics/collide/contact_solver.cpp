@@ -44,7 +44,7 @@ bool ContactSolver::pair_contact(const ParticleState& s, const Model& m, const P
     if (s.frozen[p.a] || s.frozen[p.b]) return false;
     const Vec3 d = s.position(p.b) - s.position(p.a);
     const double len = glm::length(d);
-    if (!(len > 0.0)) return false;  // concentric: no normal (the overlap pass opens them)
+    if (!(len > 0.0)) return false;  // concentric: no normal (the overlap pass opens them first)
     const double reach = s.radius[p.a] + s.radius[p.b];
     const Vec3 n = d / len;
     const double closing = glm::dot(s.velocity(p.b) - s.velocity(p.a), n);
