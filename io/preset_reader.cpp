@@ -5,7 +5,7 @@
 #include "io/preset_reader.hpp"
 
 #include "io/value_reader.hpp"
-#include "physics/model/emitter.hpp"
+#include "physics/model/start_packing.hpp"
 #include "physics/model/schema/scene_fields.hpp"
 
 #include <fmt/format.h>
@@ -141,7 +141,7 @@ private:
     void variants(const PresetJson& j, const std::string& path, Scene& scene);
     void particle_count(const SectionRead& r, const Scene& scene);
     void check_fits(const Room& room, const Scene& scene);
-    void check_emitter_packing(const Scene& scene);
+    void check_start_packing(const Scene& scene);
     void check_expectations(const Scene& scene);
 
     const Scene* scene_ = nullptr;
@@ -301,26 +301,37 @@ void Reader::check_fits(const Room& room, const Scene& scene) {
                                                number_text(0.5 * smallest), number_text(scene.emitter->radius_max)));
 }
 
-// With collisions on (in the scene or any variant), an emitter may not start its balls packed
-// beyond the space they start in: thousands in one spot would each overlap thousands of others
-// (a clump of 1e4 balls of 2 cm in a 2 mm region made 5e7 contact pairs, 24 GB and minutes a
-// step). Without collisions overlaps cost nothing, and are allowed.
-void Reader::check_emitter_packing(const Scene& scene) {
-    if (!scene.emitter || !emitter_radius_ok_ || !emitter_count_ok_ || !emitter_region_ok_ || scene.emitter->count < 2)
-        return;
+// With collisions on (in the scene or any variant), the balls may not start packed beyond the
+// space they start in (physics/model/start_packing.hpp): the emitter's, and the listed ones'.
+// Without collisions overlaps cost nothing, and are allowed.
+void Reader::check_start_packing(const Scene& scene) {
     const bool collisions = scene.collisions.enabled ||
                             std::any_of(scene.variants.begin(), scene.variants.end(),
                                         [](const Variant& v) { return v.collisions && v.collisions->enabled; });
     if (!collisions) return;
-    const double fraction = emitted_volume_fraction(*scene.emitter, scene.room);
-    if (!(fraction > max_emitted_volume_fraction)) return;
-    fail("emitter.count",
-         fmt::format("with collisions on, {} balls (mean radius {} m) would have a volume fraction of {:.3g} in the "
-                     "space they start in (the region of centres inside the room, grown by a radius; at most {}): "
-                     "each would start inside others. Widen region_min/region_max, emit fewer or smaller balls, or "
-                     "turn collisions off",
-                     scene.emitter->count, number_text(0.5 * (scene.emitter->radius_min + scene.emitter->radius_max)),
-                     fraction, number_text(max_emitted_volume_fraction)));
+    const std::string most = number_text(max_start_volume_fraction);
+    const Emitter* e = scene.emitter ? &*scene.emitter : nullptr;
+    if (e && e->count >= 2 && emitter_radius_ok_ && emitter_count_ok_ && emitter_region_ok_) {
+        const double fraction = emitted_volume_fraction(*e, scene.room);
+        if (fraction > max_start_volume_fraction)
+            fail("emitter.count",
+                 fmt::format("with collisions on, {} balls (mean radius {} m) would have a volume fraction of {:.3g} in "
+                             "the space they start in (the region of centres inside the room, grown by a radius; at "
+                             "most {}): each would start inside others. Widen region_min/region_max, emit fewer or "
+                             "smaller balls, or turn collisions off",
+                             e->count, number_text(0.5 * (e->radius_min + e->radius_max)), fraction, most));
+    }
+    // Every listed particle read (each a pending fit): else its own errors come first.
+    const std::vector<ParticleSpec>& listed = scene.particles;
+    if (listed.size() >= 2 && pending_fits_.size() == listed.size()) {
+        const double fraction = listed_volume_fraction(listed);
+        if (fraction > max_start_volume_fraction)
+            fail("particles",
+                 fmt::format("with collisions on, the {} listed balls have a volume fraction of {:.3g} in the box their "
+                             "centres span (grown by a radius; at most {}): they start inside each other. Space them "
+                             "apart, or turn collisions off",
+                             listed.size(), fraction, most));
+    }
 }
 
 void Reader::particle_count(const SectionRead& r, const Scene& scene) {
@@ -346,7 +357,7 @@ void Reader::document(const PresetJson& doc, Scene& scene) {
     if (variant_list_) variants(*variant_list_, "variants", scene);
     particle_count(r, scene);
     if (room_ok_) check_fits(scene.room, scene);
-    if (room_ok_) check_emitter_packing(scene);
+    if (room_ok_) check_start_packing(scene);
     check_expectations(scene);
 }
 

@@ -1,6 +1,6 @@
 #include "io/preset_reference.hpp"
 
-#include "physics/model/emitter.hpp"
+#include "physics/model/start_packing.hpp"
 #include "physics/model/schema/scene_fields.hpp"
 
 #include <fmt/format.h>
@@ -129,17 +129,18 @@ std::string preset_format_reference() {
     out += fmt::format(
         "\n"
         "Omitted sections and fields take the defaults shown. Rules that span fields: at least one\n"
-        "particle (from `particles`, `emitter`, or both; at most {} in all); every particle fits\n"
+        "particle (from `particles`, `emitter`, or both; at most {0} in all); every particle fits\n"
         "inside the room (radius < half its smallest size, centre a radius away from every wall);\n"
         "emitter region_min <= region_max per axis, speed_min <= speed_max, mass_min <= mass_max,\n"
         "radius_min <= radius_max; with collisions on (in the scene or a variant), the emitter's balls\n"
-        "have a volume fraction of at most {} in the space they start in (the region of centres inside\n"
-        "the room, grown by a radius); variant labels unique; an expectation's particle and variant\n"
-        "exist; a variant's section starts from the scene's own, so a variant need only name what\n"
-        "differs. Unknown keys, duplicate keys, wrong types,\n"
+        "have a volume fraction of at most {1} in the space they start in (the region of centres inside\n"
+        "the room, grown by a radius), and so do the listed balls in the box their centres span;\n"
+        "variant labels unique; an expectation's particle and variant exist; a variant's section\n"
+        "starts from the scene's own, so a variant need only name what differs. Unknown keys,\n"
+        "duplicate keys, wrong types,\n"
         "non-finite numbers (1e400 overflows to infinity) and out-of-range values are errors; every\n"
         "one is reported with its JSON path. Saved files list every field, defaults included.\n",
-        schema::max_particles, short_number(max_emitted_volume_fraction));
+        schema::max_particles, short_number(max_start_volume_fraction));
     return out;
 }
 

@@ -189,15 +189,17 @@ TEST(BadPresetCatalogue, CataloguePresetsAreOneDefectAwayFromValid) {
     EXPECT_TRUE(r.ok()) << r.error_text();
 }
 
-TEST(BadPresetCatalogue, AnEmitterClumpIsRefusedOnlyWithCollisions) {
-    // Balls that start inside each other cost nothing without collisions: the same clump loads
-    // once no variant turns them on.
-    const std::string clump = read_bytes(catalogue_file("_emitter_clump_with_collisions.json"));
-    const std::string on = R"("enabled": true)";
-    const std::size_t at = clump.find(on);
-    ASSERT_NE(at, std::string::npos);
-    const LoadResult off = parse_preset(std::string(clump).replace(at, on.size(), R"("enabled": false)"));
-    EXPECT_TRUE(off.ok()) << off.error_text();
+TEST(BadPresetCatalogue, AClumpIsRefusedOnlyWithCollisions) {
+    // Balls that start inside each other cost nothing without collisions: the same clumps, emitted
+    // or listed, load once no variant turns them on.
+    for (const char* suffix : {"_emitter_clump_with_collisions.json", "_listed_clump_with_collisions.json"}) {
+        const std::string clump = read_bytes(catalogue_file(suffix));
+        const std::string on = R"("enabled": true)";
+        const std::size_t at = clump.find(on);
+        ASSERT_NE(at, std::string::npos) << suffix;
+        const LoadResult off = parse_preset(std::string(clump).replace(at, on.size(), R"("enabled": false)"));
+        EXPECT_TRUE(off.ok()) << suffix << ": " << off.error_text();
+    }
 }
 
 // ---------------------------------------------------------------- files that are not presets
