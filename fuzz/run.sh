@@ -30,7 +30,7 @@ fi
 out=build/fuzz
 binary=$out/preset_fuzzer
 # The loader and what it links against; nothing else of physics/ is needed.
-sources=(fuzz/preset_fuzzer.cpp io/preset_io.cpp io/atomic_output.cpp io/preset_parse.cpp io/preset_reader.cpp io/preset_paths.cpp io/value_reader.cpp io/preset_writer.cpp physics/model/scene.cpp physics/model/emitter.cpp physics/model/start_packing.cpp)
+sources=(fuzz/preset_fuzzer.cpp io/preset_io.cpp io/atomic_output.cpp io/preset_parse.cpp io/preset_reader.cpp io/preset_paths.cpp io/value_reader.cpp io/preset_writer.cpp physics/model/scene.cpp physics/model/emitter.cpp physics/model/start_packing.cpp physics/model/sphere_overlaps.cpp)
 mkdir -p "$out"
 # The same include roots as the CMake targets: only physics/ and io/ are visible.
 mkdir -p "$out/include"

@@ -302,7 +302,8 @@ void Reader::check_fits(const Room& room, const Scene& scene) {
 }
 
 // With collisions on (in the scene or any variant), the balls may not start packed beyond the
-// space they start in (physics/model/start_packing.hpp): the emitter's, and the listed ones'.
+// space they start in (physics/model/start_packing.hpp): the emitter's by their volume fraction,
+// the listed ones' by their overlapping pairs.
 // Without collisions overlaps cost nothing, and are allowed.
 void Reader::check_start_packing(const Scene& scene) {
     const bool collisions = scene.collisions.enabled ||
@@ -324,13 +325,15 @@ void Reader::check_start_packing(const Scene& scene) {
     // Every listed particle read (each a pending fit): else its own errors come first.
     const std::vector<ParticleSpec>& listed = scene.particles;
     if (listed.size() >= 2 && pending_fits_.size() == listed.size()) {
-        const double fraction = listed_volume_fraction(listed);
-        if (fraction > max_start_volume_fraction)
+        const OverlapCount overlaps = listed_overlaps(listed);
+        if (overlaps.over_limit)
             fail("particles",
-                 fmt::format("with collisions on, the {} listed balls have a volume fraction of {:.3g} in the box their "
-                             "centres span (grown by a radius; at most {}): they start inside each other. Space them "
-                             "apart, or turn collisions off",
-                             listed.size(), fraction, most));
+                 fmt::format("with collisions on, the {} listed balls overlap in more than {} pairs (at most {} per "
+                             "ball): they start inside each other. The deepest seen, particles[{}] and particles[{}], "
+                             "overlap by {} m, {:.3g} of their contact distance. Space them apart, or turn collisions off",
+                             listed.size(), overlaps.pairs - 1, number_text(max_start_overlaps_per_ball),
+                             overlaps.deepest_a, overlaps.deepest_b, number_text(overlaps.deepest_depth),
+                             overlaps.deepest_share));
     }
 }
 

@@ -134,13 +134,13 @@ std::string preset_format_reference() {
         "emitter region_min <= region_max per axis, speed_min <= speed_max, mass_min <= mass_max,\n"
         "radius_min <= radius_max; with collisions on (in the scene or a variant), the emitter's balls\n"
         "have a volume fraction of at most {1} in the space they start in (the region of centres inside\n"
-        "the room, grown by a radius), and so do the listed balls in the box their centres span;\n"
+        "the room, grown by a radius), and the listed balls overlap in at most {2} pairs per ball;\n"
         "variant labels unique; an expectation's particle and variant exist; a variant's section\n"
         "starts from the scene's own, so a variant need only name what differs. Unknown keys,\n"
         "duplicate keys, wrong types,\n"
         "non-finite numbers (1e400 overflows to infinity) and out-of-range values are errors; every\n"
         "one is reported with its JSON path. Saved files list every field, defaults included.\n",
-        schema::max_particles, short_number(max_start_volume_fraction));
+        schema::max_particles, short_number(max_start_volume_fraction), short_number(max_start_overlaps_per_ball));
     return out;
 }
 

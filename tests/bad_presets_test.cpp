@@ -192,7 +192,8 @@ TEST(BadPresetCatalogue, CataloguePresetsAreOneDefectAwayFromValid) {
 TEST(BadPresetCatalogue, AClumpIsRefusedOnlyWithCollisions) {
     // Balls that start inside each other cost nothing without collisions: the same clumps, emitted
     // or listed, load once no variant turns them on.
-    for (const char* suffix : {"_emitter_clump_with_collisions.json", "_listed_clump_with_collisions.json"}) {
+    for (const char* suffix : {"_emitter_clump_with_collisions.json", "_listed_clump_with_collisions.json",
+                               "_listed_crowd_beside_outliers_with_collisions.json"}) {
         const std::string clump = read_bytes(catalogue_file(suffix));
         const std::string on = R"("enabled": true)";
         const std::size_t at = clump.find(on);

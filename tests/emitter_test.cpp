@@ -1,6 +1,6 @@
 // The emitter is one seeded draw sequence: any prefix of it is the same particles, which lets the
 // GUI take particle 0 of a two-million-particle scene without building the other 1,999,999.
-// Also how tightly emitted and listed balls start (physics/model/start_packing.hpp).
+// Also how tightly emitted balls start (physics/model/start_packing.hpp).
 #include "physics/model/emitter.hpp"
 #include "physics/model/start_packing.hpp"
 #include "physics/model/scene.hpp"
@@ -78,27 +78,6 @@ TEST(StartPacking, EmittedVolumeFractionClosedForms) {
     EXPECT_NEAR(emitted_volume_fraction(e, room), 1000 * 4.0 / 3.0 * pi * mean_r3 / (2.2 * 2.2 * 2.2), 1e-12);
     e.count = 0;
     EXPECT_EQ(emitted_volume_fraction(e, room), 0.0);
-}
-
-
-// Listed balls: their volume over the box their centres span, grown by the mean radius. Two balls
-// touching side by side fill 2 (4/3 pi r^3) / (4r 2r 2r) = pi / 6 of it; n at one point fill
-// n pi / 6 of a cube of side 2r; a row of n touching balls, n (4/3 pi r^3) / (2 n r 2r 2r).
-TEST(StartPacking, ListedVolumeFractionClosedForms) {
-    constexpr double pi = 3.141592653589793;
-    const double r = 0.05;
-    auto at = [r](double x) {
-        ParticleSpec p;
-        p.position = {x, 1.0, 0.0};
-        p.radius = r;
-        return p;
-    };
-    EXPECT_NEAR(listed_volume_fraction({at(0.0), at(2 * r)}), pi / 6, 1e-12);
-    EXPECT_NEAR(listed_volume_fraction(std::vector<ParticleSpec>(40, at(0.0))), 40 * pi / 6, 1e-9);
-    std::vector<ParticleSpec> row;
-    for (int k = 0; k < 6; ++k) row.push_back(at(2 * r * k));
-    EXPECT_NEAR(listed_volume_fraction(row), 6 * 4.0 / 3.0 * pi * r * r * r / (12 * r * 2 * r * 2 * r), 1e-12);
-    EXPECT_EQ(listed_volume_fraction({}), 0.0);
 }
 
 }  // namespace

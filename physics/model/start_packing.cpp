@@ -1,5 +1,7 @@
 #include "physics/model/start_packing.hpp"
 
+#include "physics/collide/collision_pass.hpp"
+
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -30,18 +32,12 @@ double emitted_volume_fraction(const Emitter& e, const Room& room) {
     return fraction_in_box(static_cast<double>(e.count), 0.5 * (r0 + r1), mean_r3, sides);
 }
 
-double listed_volume_fraction(const std::vector<ParticleSpec>& particles) {
-    if (particles.empty()) return 0.0;
-    Vec3 lo = particles.front().position, hi = lo;
-    double sum_r = 0.0, sum_r3 = 0.0;
-    for (const ParticleSpec& p : particles) {
-        lo = glm::min(lo, p.position);
-        hi = glm::max(hi, p.position);
-        sum_r += p.radius;
-        sum_r3 += p.radius * p.radius * p.radius;
-    }
-    const auto n = static_cast<double>(particles.size());
-    return fraction_in_box(n, sum_r / n, sum_r3 / n, hi - lo);
+OverlapCount listed_overlaps(const std::vector<ParticleSpec>& particles) {
+    std::vector<Sphere> spheres;
+    spheres.reserve(particles.size());
+    for (const ParticleSpec& p : particles) spheres.push_back({p.position, p.radius});
+    const auto limit = static_cast<std::size_t>(max_start_overlaps_per_ball * static_cast<double>(particles.size()));
+    return count_overlaps(spheres, limit, collide::CollisionPass::allowed_overlap);
 }
 
 }  // namespace pl

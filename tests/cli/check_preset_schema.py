@@ -31,8 +31,10 @@ CANNOT_TELL = {
     "110_expect_particle_out_of_range.json": "expect[].particle < the number of particles: a relation between two sections",
     "166_emitter_clump_with_collisions.json": "the emitter's volume fraction with collisions on: a product of count, radii, "
     "region and room, in any variant",
-    "167_listed_clump_with_collisions.json": "the listed balls' volume fraction with collisions on: a sum over every "
-    "particle against the box they span, in any variant",
+    "167_listed_clump_with_collisions.json": "the listed balls' overlapping pairs with collisions on: distances between "
+    "every two particles, in any variant",
+    "168_listed_crowd_beside_outliers_with_collisions.json": "the listed balls' overlapping pairs with collisions on: "
+    "distances between every two particles, in any variant",
 }
 
 
