@@ -174,7 +174,7 @@ private:
     // `frame_dt`: the real time since the last frame.
     bool session_frame(bool quitting, double frame_dt);
     void draw(const ShellLayout& layout, const FramebufferMapping& fb);
-    void present(int fb_w, int fb_h);
+    void present();
 
     ui::LabSession& session_;
     const GuiOptions& options_;
@@ -197,7 +197,7 @@ private:
     ViewDrag drag_;
     std::string title_;
     long frames_ = 0;
-    int fb_w_ = 0, fb_h_ = 0;  // the framebuffer size draw() planned for
+    int fb_w_ = 0, fb_h_ = 0;  // the framebuffer size of this frame: draw() plans for it, present() draws at it
     bool drawn_ = true;        // present() has run since the last draw()
     std::vector<ViewPane> shown_panes_;  // the last frame's, for the state dump
     RecordControl record_;
@@ -218,10 +218,9 @@ bool FrameLoop::session_frame(bool quitting, double frame_dt) {
     if (key_command.toggle_recording) record_.toggle = true;
     apply_view_command(key_command, view_, session);
     input_.keys.clear();
-    int fb_w = 0, fb_h = 0;
-    glfwGetFramebufferSize(window_.handle(), &fb_w, &fb_h);
-    const FramebufferMapping fb{io.DisplaySize.x > 0 ? static_cast<float>(fb_w) / io.DisplaySize.x : 1.0f,
-                                io.DisplaySize.y > 0 ? static_cast<float>(fb_h) / io.DisplaySize.y : 1.0f, fb_h};
+    glfwGetFramebufferSize(window_.handle(), &fb_w_, &fb_h_);
+    const FramebufferMapping fb{io.DisplaySize.x > 0 ? static_cast<float>(fb_w_) / io.DisplaySize.x : 1.0f,
+                                io.DisplaySize.y > 0 ? static_cast<float>(fb_h_) / io.DisplaySize.y : 1.0f, fb_h_};
     const ShellLayout layout = compute_layout(io.DisplaySize.x, io.DisplaySize.y, collapsed_, layout_metrics());
     begin_record_frame(record_, session, layout, io.DisplaySize.x, io.DisplaySize.y, fb.scale_x, fb.scale_y);
     // A recording runs on its own fixed clock: each frame is 1/fps of real time, however long it
@@ -243,11 +242,9 @@ bool FrameLoop::session_frame(bool quitting, double frame_dt) {
     draw(layout, fb);
     // Pixels read back this frame (a recording, a screenshot) need the scene drawn first; any
     // other frame draws it after the mutex is released (FrameLoop::frame).
-    if (record_.recorder.active() || session.requests.screenshot || options_.screenshot) present(fb_w, fb_h);
-    fb_w_ = fb_w;
-    fb_h_ = fb_h;
+    if (record_.recorder.active() || session.requests.screenshot || options_.screenshot) present();
     ++frames_;
-    const bool record_over = end_record_frame(record_, session, fb_w, fb_h);
+    const bool record_over = end_record_frame(record_, session, fb_w_, fb_h_);
     const bool last_frame = quitting || record_over || (options_.frames && frames_ >= *options_.frames);
     if (session.requests.screenshot) {
         take_screenshot(session.requests.screenshot_path, window_.handle(), session, &session.requests);
@@ -289,10 +286,10 @@ void FrameLoop::draw(const ShellLayout& layout, const FramebufferMapping& fb) {
 
 // The scene and ImGui's draw lists, from what draw() kept: no session state, so it runs without
 // the physics thread's mutex (a software rasteriser spends milliseconds in its draw calls).
-void FrameLoop::present(int fb_w, int fb_h) {
+void FrameLoop::present() {
     if (drawn_) return;
     drawn_ = true;
-    glViewport(0, 0, fb_w, fb_h);
+    glViewport(0, 0, fb_w_, fb_h_);
     glClearColor(0.085f, 0.093f, 0.11f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     renderer_->submit();
@@ -319,7 +316,7 @@ bool FrameLoop::frame() {
         last_frame = session_frame(quitting, frame_dt);
     }
     // Drawing and presenting (where a software rasteriser does its work) run without the mutex.
-    present(fb_w_, fb_h_);
+    present();
     glfwSwapBuffers(window_.handle());
     const double spent = std::chrono::duration<double>(Clock::now() - start).count();
     session_.frame.render_ms = 1e3 * (spent - waited_s);  // shown by the next frame's status bar
