@@ -1,9 +1,12 @@
 // Particle-particle collisions (physics/collide/) against closed forms: 1D impacts with any
 // restitution (with bare masses and with added mass), the equal-mass elastic glancing impact (paths at 90 degrees), Newton's cradle, a
-// head-on pair far faster than the step can resolve by overlap, and the off switch.
+// head-on pair far faster than the step can resolve by overlap, the off switch, and the warning
+// when a step leaves two balls inside each other.
+#include "physics/collide/collision_pass.hpp"
 #include "physics/collide/narrow_phase.hpp"
 #include "physics/stepping/energy.hpp"
 #include "physics/stepping/simulation.hpp"
+#include "physics/stepping/warnings.hpp"
 
 #include <gtest/gtest.h>
 
@@ -179,6 +182,35 @@ TEST(Collision, ConcentricBallsAreOpenedAgainstGravity) {
         EXPECT_NEAR(glm::length(centre - fall), 0.0, 1e-9);
         EXPECT_NEAR(glm::length(sim.state().velocity(1) - sim.state().velocity(0)), 0.0, 1e-12);
     }
+}
+
+// The pass meets pairs on straight paths from a step's start to its end. A ball that strikes a
+// wall and another ball in one step did not move straight: at dt = 5 ms, balls at 100 m/s in a
+// 1 m room (half the room a step) end steps inside each other, and the simulation says so. At
+// dt = 0.5 ms (5 cm a step, half a radius) nothing is left overlapping, and nothing is said.
+TEST(Collision, ABallThatMetAWallAndABallInOneStepIsReportedWhenLeftInside) {
+    auto box = [](double dt) {
+        Model m = free_space(1.0, dt);
+        m.room.size = {1.0, 1.0, 1.0};
+        return Simulation(m, {ball({-0.3, 0, 0}, {100, 0, 0}, 1.0, 0.1), ball({0.3, 0.01, 0}, {-37, 0, 0}, 3.0, 0.1)});
+    };
+    auto overlap_warnings = [](const Simulation& sim) {
+        std::size_t n = 0;
+        for (const Warning& w : sim.warnings())
+            if (w.kind == WarningKind::collision_overlap) {
+                ++n;
+                EXPECT_GT(w.value, collide::CollisionPass::warn_overlap);
+                EXPECT_NE(warning_message(w, sim.model()).find("smaller dt"), std::string::npos);
+            }
+        return n;
+    };
+    Simulation coarse = box(5e-3);
+    coarse.run_until(2.0);
+    EXPECT_GE(overlap_warnings(coarse), 1u);
+    Simulation fine = box(5e-4);
+    fine.run_until(2.0);
+    EXPECT_EQ(overlap_warnings(fine), 0u);
+    EXPECT_GT(fine.collisions_total(), 50u);
 }
 
 }  // namespace

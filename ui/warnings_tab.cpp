@@ -23,6 +23,7 @@ const char* kind_name(WarningKind k) {
         case WarningKind::runaway: return "frozen (runaway speed)";
         case WarningKind::impact_cap: return "frozen (impact cap)";
         case WarningKind::no_rest: return "never rests (explicit Euler)";
+        case WarningKind::collision_overlap: return "balls left overlapping";
     }
     return "?";
 }

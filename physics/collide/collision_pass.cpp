@@ -153,6 +153,7 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
     const double g = glm::length(m.world.gravity);
     const Vec3 up = g > 0.0 ? -m.world.gravity / g : Vec3(0.0, 1.0, 0.0);
     const std::vector<std::uint8_t>& asleep = islands_.asleep();
+    deep_overlaps_.clear();
     for (const Pair& p : pairs_) {
         if (asleep[p.a] && asleep[p.b]) continue;
         const Vec3 d = s.position(p.b) - s.position(p.a);
@@ -160,12 +161,29 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
         const double len = glm::length(d);
         const double overlap = contact - len - allowed_overlap * contact;
         if (!(overlap > 0.0)) continue;
+        note_deep_overlap(p, contact, len);
         const double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
         const double correction = std::min(correction_share * overlap, max_correction * contact);
         const Vec3 push = len > 0.0 ? (correction / (len * (inv_a + inv_b))) * d : (correction / (inv_a + inv_b)) * up;
         move_to(s, m, p.a, s.position(p.a) - inv_a * push);
         move_to(s, m, p.b, s.position(p.b) + inv_b * push);
+        for (const std::uint32_t i : {p.a, p.b})
+            if (stamp_[i] != corrected) {
+                stamp_[i] = corrected;
+                corrected_.push_back(i);
+            }
     }
+    for (const std::uint32_t i : corrected_) stamp_[i] = 0;
+    corrected_.clear();
+}
+
+void CollisionPass::note_deep_overlap(const Pair& p, double contact, double distance) {
+    // Only the step's own motion counts: a pair apart at its start, neither of whose balls this
+    // removal has moved yet (opening a crowd pushes balls into their neighbours for a step).
+    const double share = (contact - distance) / contact;
+    if (share > warn_overlap && stamp_[p.a] != corrected && stamp_[p.b] != corrected &&
+        glm::distance(start_[p.a], start_[p.b]) >= (1.0 - allowed_overlap) * contact)
+        deep_overlaps_.push_back({p.a, p.b, share});
 }
 
 void CollisionPass::hold_sleepers(ParticleState& s) {

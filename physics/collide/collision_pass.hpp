@@ -40,6 +40,11 @@ public:
     static constexpr double correction_share = 0.8;
     static constexpr double max_correction = 0.2;
     static constexpr double allowed_overlap = 1e-4;
+    // A pair apart at the step's start that the step left overlapping deeper than this share of
+    // its contact distance is reported (deep_overlaps()): a meeting the pass could not follow (a
+    // ball that struck a wall and another ball in one step, whose path was not straight); never a
+    // settling pile (below 1%) or an emitter's overlaps being opened (there from the start).
+    static constexpr double warn_overlap = 0.1;
 
     explicit CollisionPass(std::size_t particles);
 
@@ -70,6 +75,13 @@ public:
     const std::vector<std::uint32_t>& fell_asleep() const { return islands_.fell_asleep(); }
     std::size_t asleep_count() const { return islands_.asleep_count(); }
     std::uint64_t resting_contacts() const { return resting_; }  // loaded contacts, last step
+    // The last step's pairs left overlapping past warn_overlap (before the overlap removal), by
+    // particle a < b and the overlap as a share of their contact distance.
+    struct DeepOverlap {
+        std::uint32_t a, b;
+        double share;
+    };
+    const std::vector<DeepOverlap>& deep_overlaps() const { return deep_overlaps_; }
 
 private:
     struct Hit {
@@ -88,6 +100,7 @@ private:
     void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
     void remove_overlaps(ParticleState& s, const Model& m);
+    void note_deep_overlap(const Pair& p, double contact, double distance);
     void keep_rest_on_walls(ParticleState& s, double impact);
     void touch(std::uint32_t i);
 
@@ -96,7 +109,10 @@ private:
     // moves at path_rate_ (m/s) until the step's end.
     std::vector<Vec3> path_start_, path_rate_;
     std::vector<double> path_time_;
-    std::vector<std::uint32_t> stamp_;  // pass number that last resolved the particle
+    // Per particle: the pass number that last resolved it, during the impacts; `corrected` once
+    // the overlap removal moved it (corrected_ lists those, to set back to 0).
+    std::vector<std::uint32_t> stamp_, corrected_;
+    static constexpr std::uint32_t corrected = 0xffffffffu;
     std::vector<std::uint8_t> touched_;
     std::vector<std::uint8_t> listed_;  // per particle: 1 while list_pair_particles runs
     std::vector<std::uint32_t> moved_;
@@ -116,6 +132,7 @@ private:
     ContactSolver solver_;
     SleepIslands islands_;
     std::uint64_t resting_ = 0;
+    std::vector<DeepOverlap> deep_overlaps_;
 };
 
 }  // namespace pl::collide

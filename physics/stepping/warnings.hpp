@@ -19,8 +19,9 @@ enum class WarningKind : std::uint8_t {
     runaway,        // speed beyond the speed of light (a finite blow-up): frozen
     impact_cap,     // more wall impacts in one step than max_impacts_per_step: frozen
     no_rest,        // explicit Euler at this dt cannot come to rest on a floor (see no_rest_dt)
+    collision_overlap,  // a step left two balls overlapping deeply (collide::CollisionPass::warn_overlap)
 };
-constexpr std::size_t warning_kind_count = static_cast<std::size_t>(WarningKind::no_rest) + 1;
+constexpr std::size_t warning_kind_count = static_cast<std::size_t>(WarningKind::collision_overlap) + 1;
 
 struct Warning {
     WarningKind kind;
@@ -28,7 +29,8 @@ struct Warning {
     double t;  // s: the step (frozen) or the monitor's sample (the others) that saw it
     // drag_validity: Re; mach: speed relative to the air (m/s); stability: drag stiffness k
     // (1/s); runaway, impact_cap: the speed the failed step reached (m/s); frozen: unused; no_rest: the
-    // largest dt (s) at which explicit Euler comes to rest.
+    // largest dt (s) at which explicit Euler comes to rest; collision_overlap: the overlap, as a share
+    // of the pair's contact distance.
     double value = 0.0;
 };
 
