@@ -12,7 +12,7 @@ void EventSink::end_step() const {
 }
 
 void WarningSink::raise(WarningKind kind, std::uint32_t particle, double t, double value, bool above_range) const {
-    const auto bit = static_cast<std::uint16_t>(1u << (above_range ? drag_above_range_bit : static_cast<unsigned>(kind)));
+    const auto bit = static_cast<WarningBits>(1u << (above_range ? drag_above_range_bit : static_cast<unsigned>(kind)));
     if ((*warned)[particle] & bit) return;
     (*warned)[particle] |= bit;
     warnings->push_back({kind, particle, t, value});

@@ -31,7 +31,7 @@ struct EventSink {
 // must not mask the real one of the same particle leaving the range upwards later.
 struct WarningSink {
     std::vector<Warning>* warnings;
-    std::vector<std::uint16_t>* warned;
+    std::vector<WarningBits>* warned;
     static constexpr unsigned drag_above_range_bit = 15;
     void raise(WarningKind kind, std::uint32_t particle, double t, double value = 0.0, bool above_range = false) const;
 };

@@ -147,7 +147,7 @@ private:
     std::vector<Event> events_;
     std::uint64_t dropped_events_ = 0;
     std::vector<Warning> warnings_;
-    std::vector<std::uint16_t> warned_;  // per particle: bit per WarningKind
+    std::vector<WarningBits> warned_;  // per particle: bit per WarningKind
     std::uint8_t no_rest_floors_ = 0;    // walls on which the model cannot come to rest (watch_rest)
     ForceCounters counters_;
     ReRange reynolds_{INFINITY, 0.0};

@@ -31,7 +31,7 @@ struct MonitorLimits {
 // the linear and quadratic models).
 template <class F, bool Identical>
 void scan(const ParticleState& s, const WindField& wind, double t, const MonitorLimits& lim,
-          const std::uint16_t* warned, std::size_t begin, std::size_t end, MonitorScan& out) {
+          const WarningBits* warned, std::size_t begin, std::size_t end, MonitorScan& out) {
     constexpr std::size_t chunk = 256;
     // 64-bit lanes (a byte-sized value would make GCC take 64 particles per vector iteration).
     std::int64_t skip[chunk], unwarned[chunk], suspect[chunk];
@@ -45,7 +45,7 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
         for (std::size_t j = 0; j < n; ++j) {
             skip[j] = (s.frozen[c + j] | s.resting[c + j]) != 0;
             // Kinds of warning the particle can still get (none while it rests or is frozen).
-            unwarned[j] = skip[j] ? 0 : ~warned[c + j] & 0xffff;
+            unwarned[j] = skip[j] ? 0 : static_cast<WarningBits>(~warned[c + j]);
         }
         if constexpr (F::has_wind) {
             for (std::size_t j = 0; j < n; ++j) {
@@ -98,7 +98,7 @@ void scan(const ParticleState& s, const WindField& wind, double t, const Monitor
     }
 }
 
-using ScanFn = void (*)(const ParticleState&, const WindField&, double, const MonitorLimits&, const std::uint16_t*,
+using ScanFn = void (*)(const ParticleState&, const WindField&, double, const MonitorLimits&, const WarningBits*,
                         std::size_t, std::size_t, MonitorScan&);
 
 // The scan for the terms the model enables (null without drag: nothing to watch).

@@ -22,6 +22,8 @@ enum class WarningKind : std::uint8_t {
     collision_overlap,  // a step left two balls overlapping deeply (collide::CollisionPass::warn_overlap)
 };
 constexpr std::size_t warning_kind_count = static_cast<std::size_t>(WarningKind::collision_overlap) + 1;
+// Per particle, a bit per kind it has been warned about (and one more: WarningSink).
+using WarningBits = std::uint16_t;
 
 struct Warning {
     WarningKind kind;

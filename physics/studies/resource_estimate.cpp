@@ -1,6 +1,7 @@
 #include "physics/studies/resource_estimate.hpp"
 
 #include "physics/stepping/particle_state.hpp"
+#include "physics/stepping/warnings.hpp"
 
 #include <fmt/format.h>
 
@@ -41,9 +42,9 @@ std::string bytes_text(double b) { return fmt::format("{:.3g} GB", b / 1e9); }
 
 std::uint64_t bytes_per_particle_per_variant() {
     // ParticleState is a structure of arrays, none with elements wider than a double; its size
-    // over one array's counts the arrays. One byte more per particle: the warning bits.
+    // over one array's counts the arrays. Then the warning bits.
     static_assert(sizeof(ParticleState) % sizeof(StateArray<double>) == 0, "ParticleState holds only StateArrays");
-    return sizeof(ParticleState) / sizeof(StateArray<double>) * sizeof(double) + 1;
+    return sizeof(ParticleState) / sizeof(StateArray<double>) * sizeof(double) + sizeof(WarningBits);
 }
 
 std::uint64_t initial_bytes_per_particle() { return sizeof(ParticleSpec); }
