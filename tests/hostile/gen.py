@@ -43,11 +43,14 @@ def main():
                   '"emitter": {"count": %d, "seed": 1, "region_min": [-0.08, -0.08, -0.08], '
                   '"region_max": [0.08, 0.08, 0.08], "speed_min": 1, "speed_max": 2, '
                   '"radius_min": 0.01, "radius_max": 0.01}}' % n)
-    elif kind in ("big", "emitter"):
+    elif kind in ("big", "emitter", "colliding"):
         n = int(arg)
         variants = ""
         if kind == "big":
             variants = ', "variants": [' + ", ".join('{"label": "v%d"}' % i for i in range(1000)) + "]"
+        if kind == "colliding":  # 64 variants, collisions on: the collision pass's memory dominates
+            variants = ', "collisions": {"enabled": true}, "variants": [' + ", ".join(
+                '{"label": "v%d"}' % i for i in range(64)) + "]"
         out.write(HEAD + '"emitter": {"count": %d, "radius_min": 0.001, "radius_max": 0.001}' % n + variants + "}")
     elif kind == "dt":
         out.write(HEAD + BALL + ', "integrator": {"method": "semi_implicit_euler", "dt": %s}}' % arg)

@@ -7,6 +7,11 @@ $gen big 2000000 >"$work/big.json"
 expect_exit memory 512 10 2 'needs about [0-9.]+ GB of memory \(2000000 particles x 1000 variants x [0-9]+ bytes\), but the machine has [0-9.]+ GB available' -- \
   "$app" run "$work/big.json"
 expect_exit memory_compare 512 10 2 'needs about [0-9.]+ GB of memory' -- "$app" compare "$work/big.json"
+# With collisions on, the collision pass holds some 30x the particle state: 2e6 balls x 64
+# variants is about 550 GB with it (18 GB without), and the refusal says where it goes.
+$gen colliding 2000000 >"$work/colliding.json"
+expect_exit memory_collisions 512 10 2 'needs about [0-9.]+ GB of memory \(2000000 particles x 64 variants x [0-9]+ bytes, and [0-9]+ bytes more per particle in the 64 variants with collisions\).*turn collisions off' -- \
+  "$app" run "$work/colliding.json"
 
 # Tiny steps and huge durations: refused with the estimate, or with the step count.
 $gen dt 1e-12 >"$work/dt_tiny.json"
