@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A preset that validates but cannot run here (an emitter of 2e6 particles x 1000 variants,
-# about 270 GB of state) opened with Ctrl+O: a dialog gives the numbers, the app stays up, and
+# about 390 GB of state) opened with Ctrl+O: a dialog gives the numbers, the app stays up, and
 # the scene it had (with its unsaved edit, after Discard) is kept and still runs.
 # Usage: unrunnable_preset.sh <particle-lab binary> <source dir>
 APP=$1

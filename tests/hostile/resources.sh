@@ -2,7 +2,7 @@
 # never slip past the whole-number-of-steps check; messages stay readable.
 source "$(dirname "$0")/hostile_lib.bash"
 
-# 2e6 particles x 1000 variants: about 270 GB. It used to die in std::bad_alloc (exit 1).
+# 2e6 particles x 1000 variants: about 390 GB. It used to die in std::bad_alloc (exit 1).
 $gen big 2000000 >"$work/big.json"
 expect_exit memory 512 10 2 'needs about [0-9.]+ GB of memory \(2000000 particles x 1000 variants x [0-9]+ bytes\), but the machine has [0-9.]+ GB available' -- \
   "$app" run "$work/big.json"
