@@ -34,6 +34,9 @@ TEST(ResourceEstimate, CountsTheCollisionPassInTheVariantsWithCollisions) {
     EXPECT_DOUBLE_EQ(estimated_bytes(w), 10.0 * (3.0 * double(bytes_per_particle_per_variant()) +
                                                  2.0 * double(collision_bytes_per_particle()) +
                                                  double(initial_bytes_per_particle())));
+    // Colliding steps cost more: the two colliding variants take longer than three plain ones.
+    const WorkEstimate plain{10, 3, 1e6, 0}, colliding{10, 3, 1e6, 2};
+    EXPECT_GT(estimated_seconds(colliding), estimated_seconds(plain));
     s.collisions.enabled = false;
     EXPECT_EQ(work_of(s).collision_variants, 0u);
     // The pass holds far more than the particle state: what the refusal must not leave out.
