@@ -153,11 +153,6 @@ TEST(Collision, RestingBallStruckOnTheFloorMoves) {
     EXPECT_NEAR(sim.state().vx[1], 0.0, 1e-9);
 }
 
-}  // namespace
-}  // namespace pl
-
-namespace pl {
-namespace {
 
 // Two balls whose centres coincide have no normal between them. They must still be opened, as
 // any overlap is: along "up" (against gravity, +y without it), the lower index below, by the

@@ -48,7 +48,6 @@ TEST(Emitter, InitialParticlesAreTheListedOnesThenTheEmittedOnes) {
     EXPECT_EQ(initial.capacity(), initial.size());
 }
 
-
 // The share of its starting space an emitter's balls fill, against closed forms: n balls of radius
 // r at one point fill n (4/3 pi r^3) / (2r)^3 = n pi / 6 of a cube of side 2r; in a region of
 // side L well inside the room, n (4/3 pi r^3) / (L + 2r)^3; a region reaching past the walls

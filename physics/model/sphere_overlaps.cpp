@@ -27,7 +27,8 @@ struct CellKey {
 };
 
 std::uint64_t hash_of(const CellKey& k) {
-    // Multiplicative mixing of the four numbers (odd 64-bit constants), the high bits used.
+    // Multiplicative mixing of the four numbers (odd 64-bit constants); the high bits are folded
+    // into the low ones, which the table's mask keeps.
     std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
     h ^= static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4Full;
     h ^= static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ull;
@@ -49,15 +50,19 @@ public:
     }
     // The members of the cell with this key (empty when none).
     std::span<const std::uint32_t> members(const CellKey& key) const {
-        for (std::uint64_t slot = hash_of(key) & mask_;; slot = (slot + 1) & mask_) {
-            const std::uint32_t id = table_[slot];
-            if (id == empty) return {};
-            if (keys_[id] == key) return {members_.data() + start_[id], members_.data() + start_[id + 1]};
-        }
+        const std::uint32_t id = table_[slot_of(key)];
+        if (id == empty) return {};
+        return {members_.data() + start_[id], members_.data() + start_[id + 1]};
     }
 
 private:
     static constexpr std::uint32_t empty = 0xffffffffu;
+    // The slot that holds the key's cell, or the empty slot where it would go (linear probing).
+    std::uint64_t slot_of(const CellKey& key) const {
+        std::uint64_t slot = hash_of(key) & mask_;
+        while (table_[slot] != empty && !(keys_[table_[slot]] == key)) slot = (slot + 1) & mask_;
+        return slot;
+    }
     std::uint32_t insert(const CellKey& key);
 
     Vec3 origin_{0.0};
@@ -109,15 +114,12 @@ LevelGrid::LevelGrid(std::span<const Sphere> spheres) : level_(spheres.size()) {
 }
 
 std::uint32_t LevelGrid::insert(const CellKey& key) {
-    for (std::uint64_t slot = hash_of(key) & mask_;; slot = (slot + 1) & mask_) {
-        const std::uint32_t id = table_[slot];
-        if (id == empty) {
-            table_[slot] = static_cast<std::uint32_t>(keys_.size());
-            keys_.push_back(key);
-            return table_[slot];
-        }
-        if (keys_[id] == key) return id;
+    std::uint32_t& id = table_[slot_of(key)];
+    if (id == empty) {
+        id = static_cast<std::uint32_t>(keys_.size());
+        keys_.push_back(key);
     }
+    return id;
 }
 
 // Counts one sphere's overlaps on one level (same_level: only with higher indices), till the
