@@ -139,6 +139,10 @@ void CollisionPass::resolve(ParticleState& s, const Model& m, const Hit& hit, bo
         const double e0 = motion_energy(s, i);
         s.set_velocity(i, s.velocity(i) + dv);
         if (spin) s.set_spin(i, s.spin(i) + dw);
+        // The solver books its work from the start's velocity and spin, with the impacts' added
+        // (an impact's work is booked here: the solver's would count its dv twice).
+        start_velocity_[i] += dv;
+        if (spin) start_spin_[i] += dw;
         if (!s.collision_work.empty()) s.collision_work[i] += motion_energy(s, i) - e0;
         touch(i);
     }

@@ -104,7 +104,8 @@ private:
     void keep_rest_on_walls(ParticleState& s, double impact);
     void touch(std::uint32_t i);
 
-    std::vector<Vec3> start_, start_velocity_, start_spin_;  // at the start of the step, per particle
+    // At the start of the step, per particle (the velocity and spin with the step's impacts added)
+    std::vector<Vec3> start_, start_velocity_, start_spin_;
     // The current path of each particle touched this step: at path_time_ it is at path_start_ and
     // moves at path_rate_ (m/s) until the step's end.
     std::vector<Vec3> path_start_, path_rate_;

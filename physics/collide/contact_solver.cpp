@@ -11,17 +11,22 @@
 #include <bit>
 #include <cmath>
 #include <iterator>
+#include <limits>
 
 namespace pl::collide {
 namespace {
 
 // The least normal relative velocity (<= 0, no push) a contact may end the step with. Position:
-// the end gap after the solver's move (dv h) stays >= 0, u_n' >= u_n - gap / h, where the pair
-// ends the step apart or overlapping; but never a push apart (at most 0: overlaps are opened on
-// positions). Velocity: a contact closing slower than an impact may not close more than its gap
-// over the next step, u_n' >= -max(gap, 0) / h (a faster one is an impact: the next step's).
-double least_normal_velocity(double gap, double closing, double h, double impact) {
-    double least = std::min(closing - gap / h, 0.0);
+// the end gap after the solver's move (du times `push`, the method's share of h: scene.hpp,
+// constant_push_share) stays >= 0, u_n' >= u_n - gap / push, where the pair ends the step apart
+// or overlapping; but never a push apart (at most 0: overlaps are opened on positions). Explicit
+// Euler's step does not move by the impulses (push = 0): no bound from the position then, unless
+// the pair overlaps (no closing at all). Velocity: a contact closing slower than an impact may
+// not close more than its gap over the next step, u_n' >= -max(gap, 0) / h (a faster one is an
+// impact: the next step's).
+double least_normal_velocity(double gap, double closing, double h, double push, double impact) {
+    const double unbounded = -std::numeric_limits<double>::infinity();
+    double least = push > 0.0 ? std::min(closing - gap / push, 0.0) : (gap < 0.0 ? 0.0 : unbounded);
     if (closing > -impact) least = std::max(least, -std::max(gap, 0.0) / h);
     return std::min(least, 0.0);
 }
@@ -54,7 +59,7 @@ bool ContactSolver::pair_contact(const ParticleState& s, const Model& m, const P
     c.a = p.a;
     c.b = p.b;
     c.n = n;
-    c.least_un = least_normal_velocity(gap, closing, h, impact);
+    c.least_un = least_normal_velocity(gap, closing, h, constant_push_share(m.integrator.method) * h, impact);
     // The inertial masses M move (added mass: the fluid too); the spin's moment is k m r^2.
     const double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
     c.normal_mass = 1.0 / (inv_a + inv_b);
@@ -141,7 +146,7 @@ void ContactSolver::wall_contacts(const ParticleState& s, const Model& m, std::u
         c.b = SolverContact::wall_contact;
         c.wall = static_cast<std::uint8_t>(w);
         c.n = -inward;  // from the particle into the wall
-        c.least_un = least_normal_velocity(gap, closing, h, impact);
+        c.least_un = least_normal_velocity(gap, closing, h, constant_push_share(m.integrator.method) * h, impact);
         c.normal_mass = s.inertial_mass[i];
         c.tangent_mass = 1.0 / (1.0 / s.inertial_mass[i] + (spin ? 1.0 / (s.inertia[i] * s.mass[i]) : 0.0));
         c.friction = m.contact.friction;
@@ -345,24 +350,43 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
     }
     std::uint64_t loaded = 0;
     for (const SolverContact& c : contacts_) loaded += c.lambda_n > 0.0;
-    // The impulses acted over the whole step: the end positions move by dv h (semi-implicit Euler,
-    // x1 = x0 + v1 h). Their work is the impulse times the mean of the velocities at the start
-    // and at the end of the step (and likewise for the spin): with gravity's m g h (v0 + v1) / 2
-    // it makes up the step's change of kinetic energy exactly, and a contact at rest
-    // (v0 = v1 = 0) does no work, so that a still pile books nothing.
+    hand_back(s, m, h, start_velocity, start_spin, spin);
+    return loaded;
+}
+
+void ContactSolver::hand_back(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
+                              const std::vector<Vec3>& start_spin, bool spin) {
+    // The impulses acted over the whole step: the end positions move by dv times the method's
+    // push (scene.hpp, constant_push_share: h for semi-implicit Euler, h / 2 for the methods
+    // exact under a constant force, 0 for explicit Euler). Their work, booked from the
+    // velocities (and spins) before the solve (vb) and after it (v1):
+    //  - On the methods exact under a constant force: the change the solve makes to the ledger's
+    //    energy, M dv . (vb + v1) / 2 - m g . dv h / 2 (kinetic and potential; spin's kinetic
+    //    alike). The step then balances to its flight's own error, impacts (of walls and of
+    //    pairs) included, and a contact holding a particle against gravity, buoyancy or wind
+    //    books minus their work over the kernel's move, which it undoes.
+    //  - On the Euler methods, which take the step's forces as kicks at its start: the impulse
+    //    times the mean of the start's velocity (this step's pair impacts added: an impact's own
+    //    work is booked where it is struck) and v1. With gravity's m g h (v0 + v1) / 2 that is
+    //    semi-implicit Euler's change of kinetic energy.
+    // Either way a contact at rest (v0 = v1 = 0) does no work: a still pile books nothing.
+    const double share = constant_push_share(m.integrator.method), push = share * h;
+    const bool exact = share == 0.5;
     for (std::size_t k = 0; k < slot_particle_.size(); ++k) {
         const std::uint32_t i = slot_particle_[k];
         s.set_velocity(i, body_[k].v);
         s.set_spin(i, body_[k].w);
         const Vec3 dv = s.velocity(i) - v0_[k], dw = s.spin(i) - w0_[k];
-        s.set_position(i, s.position(i) + h * dv);
+        s.set_position(i, s.position(i) + push * dv);
         if (s.collision_work.empty()) continue;
         const double mi = s.inertial_mass[i], moment = s.moment(i);
+        const Vec3 v_from = exact ? v0_[k] : start_velocity[i];
+        double work = mi * glm::dot(dv, 0.5 * (v_from + s.velocity(i)));
+        if (exact) work -= s.mass[i] * glm::dot(m.world.gravity, push * dv);
         // Without spin dw = 0 and start_spin is not kept (the term is zero).
-        s.collision_work[i] += mi * glm::dot(dv, 0.5 * (start_velocity[i] + s.velocity(i))) +
-                               (spin ? moment * glm::dot(dw, 0.5 * (start_spin[i] + s.spin(i))) : 0.0);
+        if (spin) work += moment * glm::dot(dw, 0.5 * ((exact ? w0_[k] : start_spin[i]) + s.spin(i)));
+        s.collision_work[i] += work;
     }
-    return loaded;
 }
 
 }  // namespace pl::collide

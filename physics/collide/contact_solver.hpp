@@ -4,8 +4,9 @@
 // Sequential impulses with accumulated, clamped impulses and warm starting (Catto, "Iterative
 // Dynamics with Temporal Coherence", GDC 2005; "Fast and Simple Physics using Sequential
 // Impulses", GDC 2006), the velocity solver of Box2D and Jolt, applied after the step: the
-// impulses act over the whole step in the semi-implicit Euler sense (x1 = x0 + v1 h), so each
-// particle's end position moves by its velocity change times h. A contact's normal impulse
+// impulses act over the whole step as a constant force would on the scene's method, so each
+// particle's end position moves by its velocity change times h (semi-implicit Euler,
+// x1 = x0 + v1 h) or h / 2 (the methods exact under a constant force). A contact's normal impulse
 // lambda_n >= 0 keeps its normal relative velocity u_n at or above a least value: the end gap
 // after that move is not negative, and a contact closing slower than an impact (collision_pass.hpp)
 // does not close more than its gap over the next step. So a pile at rest stays touching, a pair
@@ -75,8 +76,9 @@ public:
                 const std::vector<std::uint32_t>& struck, const std::vector<std::uint8_t>& asleep, double h,
                 double impact, std::size_t threads = 1);
     // Solves them; changes the velocities (and spins) of s, and moves the end positions by the
-    // velocity changes times h. Adds the contacts' work on each particle to s.collision_work
-    // (from the velocities and spins at the start of the step). Returns the number of contacts
+    // velocity changes times the method's push (constant_push_share h). Adds the contacts' work
+    // on each particle to s.collision_work, from the velocities and spins at the start of the
+    // step with the step's impacts added (`start_velocity`, `start_spin`). Returns the number of contacts
     // that carry an impulse, sleeping ones included.
     // `space_order` lists particles in an order of space (the broad phase's cells; any order, or
     // none, gives the same result: it only lays the solver's bodies out in memory).
@@ -107,6 +109,9 @@ private:
     void load_bodies(const ParticleState& s, const std::vector<std::uint32_t>& space_order);
     void apply(const SolverContact& c, const Vec3& impulse, bool spin);
     void solve_contact(SolverContact& c, bool spin);
+    // The solved velocities and spins back into s, the end positions moved, the work booked.
+    void hand_back(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
+                   const std::vector<Vec3>& start_spin, bool spin);
     void colour_contacts();
     void order_by_colour();
     template <class Visit>

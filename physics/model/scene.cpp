@@ -130,6 +130,18 @@ int method_order(Method m) {
     return 1;
 }
 
+double constant_push_share(Method m) {
+    switch (m) {
+        case Method::explicit_euler: return 0.0;
+        case Method::semi_implicit_euler: return 1.0;
+        case Method::velocity_verlet:
+        case Method::rk4:
+        case Method::dopri5:
+        case Method::exponential: return 0.5;
+    }
+    return 1.0;
+}
+
 double method_stability_limit(Method m) {
     // Stability of y' = -k y: |R(-hk)| <= 1 on the negative real axis.
     switch (m) {

@@ -214,6 +214,13 @@ double stability_limit(const IntegratorSettings& integrator);
 // search's round-off) under a constant force, so a located impact state is exact, except
 // explicit Euler's, which gains about g dt of speed on every bounce arc.
 bool keeps_bounce_energy(Method m);
+// How far a step of the method moves a particle under a constant extra acceleration a held over
+// the whole step, in units of a h^2: semi-implicit Euler's x1 = x0 + h v1 gives 1, explicit
+// Euler's x1 = x0 + h v0 gives 0, and the others, exact for a constant force (x1 = x0 + h v0 +
+// a h^2 / 2), give 1/2 (the exponential step too, exactly without drag). The contact solver's
+// impulses act over the whole step: each particle's end position moves by this share of dv h,
+// so that a particle held at rest stays where it is on every method.
+double constant_push_share(Method m);
 
 // Whether the particles' spin takes part in the motion (Magnus lift or contact coupled to spin);
 // such a model runs on the generic kernel, which carries the spin.
