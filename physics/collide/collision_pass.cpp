@@ -1,6 +1,7 @@
 #include "physics/collide/collision_pass.hpp"
 
 #include "physics/collide/narrow_phase.hpp"
+#include "physics/collide/particle_body.hpp"
 #include "physics/collide/slices.hpp"
 #include "physics/stepping/contact.hpp"
 #include "physics/stepping/energy.hpp"
@@ -13,16 +14,6 @@
 
 namespace pl::collide {
 namespace {
-
-// The inertial mass M (m with added mass off): the impulses move what the forces move, and the
-// ledger's kinetic energy is 1/2 M v^2.
-Body body_of(const ParticleState& s, std::uint32_t i) {
-    return {s.velocity(i), s.spin(i), s.inertial_mass[i], s.radius[i], s.moment(i)};
-}
-
-double motion_energy(const ParticleState& s, std::uint32_t i) {
-    return kinetic_energy(s.inertial_mass[i], s.velocity(i)) + spin_energy(s.mass[i], s.radius[i], s.inertia[i], s.spin(i));
-}
 
 // Moves particle i to x; the potential energy that gives it is the contacts' work.
 void move_to(ParticleState& s, const Model& m, std::uint32_t i, const Vec3& x) {
@@ -301,18 +292,26 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
     std::uint64_t impulses = 0;
     queue_.resize(pairs_.size());
     for (std::uint32_t k = 0; k < pairs_.size(); ++k) queue_[k] = k;  // the first pass: every pair
+    resolved_.clear();
     for (std::uint32_t pass = 1; pass <= static_cast<std::uint32_t>(max_passes); ++pass) {
         find_hits(s, h, spin, impact, threads);
+        find_wall_hits(s, m, h, impact);  // of the particles the last pass resolved
         if (hits_.empty()) break;
         std::sort(hits_.begin(), hits_.end(), [](const Hit& x, const Hit& y) {
             return x.t != y.t ? x.t < y.t : (x.a != y.a ? x.a < y.a : x.b < y.b);
         });
         resolved_.clear();
         for (const Hit& c : hits_) {
-            if (stamp_[c.a] == pass || stamp_[c.b] == pass) continue;  // its path changed: next pass
-            stamp_[c.a] = stamp_[c.b] = pass;
-            resolve(s, m, c, spin);
+            // Each particle once a pass: its path changed, so its later hits are the next pass's.
+            if (stamp_[c.a] == pass || (!c.is_wall() && stamp_[c.b] == pass)) continue;
+            stamp_[c.a] = pass;
             resolved_.push_back(c.a);
+            if (c.is_wall()) {
+                resolve_wall(s, m, c, impact);
+                continue;
+            }
+            stamp_[c.b] = pass;
+            resolve(s, m, c, spin);
             resolved_.push_back(c.b);
             ++impulses;
         }

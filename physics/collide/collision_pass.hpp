@@ -9,7 +9,8 @@
 // rigid bodies with stacking", SIGGRAPH 2003: sequential impulses, pass after pass): a pass
 // gathers the first contact of every candidate pair, sorts them by (time, a, b) and resolves them
 // in that order, each particle at most once per pass (its path changed, so its later contacts are
-// found again by the next pass). A resolved pair meets at its time of impact, takes its impulse
+// found again by the next pass). A struck particle that lies against a wall and now moves into it
+// takes that wall hit in the next pass (wall_hits.cpp). A resolved pair meets at its time of impact, takes its impulse
 // there and moves on with its new velocity for the rest of the step, so a fast pair cannot pass
 // through each other whatever the step. Searches run threaded, but every order is fixed and the
 // impulses are applied on one thread: the result is the same bits on any number of threads.
@@ -84,11 +85,15 @@ public:
     const std::vector<DeepOverlap>& deep_overlaps() const { return deep_overlaps_; }
 
 private:
+    // A hit of particles a and b, or of particle a with wall w (b = wall_hit + w), at time t of
+    // the step; n from a to b (into the wall).
     struct Hit {
         double t;
         std::uint32_t a, b;
         Vec3 n;
+        bool is_wall() const { return b >= wall_hit; }
     };
+    static constexpr std::uint32_t wall_hit = 0xfffffff0u;
     void build_boxes(const ParticleState& s, std::size_t threads);
     Vec3 at(std::uint32_t i, double t) const { return path_start_[i] + (t - path_time_[i]) * path_rate_[i]; }
     bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const;
@@ -99,6 +104,10 @@ private:
     void index_pairs();
     void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
+    // The walls inside the passes (wall_hits.cpp): the wall each particle the last pass resolved
+    // lies against and moves into, appended to hits_, and one such hit resolved.
+    void find_wall_hits(const ParticleState& s, const Model& m, double h, double impact);
+    void resolve_wall(ParticleState& s, const Model& m, const Hit& hit, double impact);
     void remove_overlaps(ParticleState& s, const Model& m);
     void note_deep_overlap(const Pair& p, double contact, double distance);
     void keep_rest_on_walls(ParticleState& s, double impact);

@@ -55,9 +55,10 @@ std::string warning_message(const Warning& w, const Model& model) {
                                w.particle, model.integrator.dt, w.value);
         case WarningKind::collision_overlap:
             return fmt::format("particle {} ended the step at t = {:.6g} s inside another ball by {:.0f}% of their "
-                               "contact distance: the collision pass meets pairs on straight paths from a step's start "
-                               "to its end, and a ball that also struck a wall in that step did not move straight. "
-                               "Use a smaller dt (dt = {:.3g} s now), so that balls move less than their radius a step",
+                               "contact distance: the collision pass could not keep them apart within one step (it meets "
+                               "pairs on straight paths from a step's start to its end, which a ball that struck a wall "
+                               "on the way did not follow, and a crowd struck hard in one step asks more of the contact "
+                               "solver's iterations than they give). Use a smaller dt (dt = {:.3g} s now), so that balls move less than their radius a step",
                                w.particle, w.t, 100.0 * w.value, model.integrator.dt);
     }
     return {};
