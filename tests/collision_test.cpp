@@ -154,6 +154,50 @@ TEST(Collision, RestingBallStruckOnTheFloorMoves) {
 }
 
 
+// A small ball sliding on the floor strikes a big resting one low: the normal at the contact
+// points up, so the big ball leaves the floor, and the small one is driven into it and bounces
+// off within the same step. Equal masses, e = 1, no friction: the big ball takes the small one's
+// velocity along the normal, n = (sqrt(R^2 - (r2 - r1)^2), r2 - r1) / R with R = r1 + r2.
+// Before, the pass took the big ball's upward velocity away (it was resting on the floor) and
+// left it gliding 2 mm above the floor at the rest of the speed.
+TEST(Collision, ABigBallStruckLowLeavesTheFloorAndTheSmallOneBouncesInTheStep) {
+    Model m = free_space(1.0);
+    m.world.gravity = {0, -9.81, 0};
+    m.room = {{0, 1, 0}, {4, 2, 4}};
+    m.contact.restitution = 0.5;
+    m.contact.rest_speed = 0.05;
+    const double big = 0.1, small = 0.02, v = 5.0;
+    Simulation sim(m, {ball({0, big, 0}, {0, 0, 0}, 1.0, big), ball({-1, small, 0}, {v, 0, 0}, 1.0, small)});
+    sim.run_until(0.17);
+    ASSERT_TRUE(sim.state().resting[0] & (1u << y_min));
+    sim.run_until(0.2);  // struck at about 0.182 s
+    const double reach = big + small, rise = big - small;
+    const Vec3 n(std::sqrt(reach * reach - rise * rise) / reach, rise / reach, 0.0);
+    const Vec3 out = v * n.x * n;  // along the normal: all of the small ball's normal velocity
+    EXPECT_EQ(sim.state().resting[0], 0) << "it left the floor";
+    EXPECT_NEAR(sim.state().vx[0], out.x, 1e-9);
+    EXPECT_GT(sim.state().y[0], big + 0.03);
+    std::vector<Event> bounces, lifts;
+    for (const Event& e : sim.events()) {
+        if (e.kind == EventKind::bounce && e.particle == 1) bounces.push_back(e);
+        if (e.kind == EventKind::lift && e.particle == 0) lifts.push_back(e);
+    }
+    ASSERT_EQ(lifts.size(), 1u);
+    EXPECT_NEAR(lifts[0].speed_out, glm::length(out), 1e-9);
+    // The small ball's bounce off the floor inside the step: in at (v - out), out with the
+    // floor's e = 0.5 on the normal speed.
+    ASSERT_EQ(bounces.size(), 1u);
+    const Vec3 in = Vec3(v, 0, 0) - out;
+    EXPECT_NEAR(bounces[0].speed_in, glm::length(in), 1e-9);
+    EXPECT_NEAR(bounces[0].speed_out, glm::length(Vec3(in.x, -0.5 * in.y, 0.0)), 1e-9);
+    EXPECT_GT(bounces[0].t, 0.18);
+    EXPECT_LT(bounces[0].t, lifts[0].t);
+    // The ledger still balances: the floor's share went to the bounce line.
+    const EnergyBreakdown en = total_energy(sim.state(), m.world.gravity, m.room);
+    EXPECT_NEAR(en.dissipated_bounce, 0.5 * 1.0 * 0.75 * in.y * in.y, 1e-9);
+    EXPECT_LT(std::abs(en.residual()), 1e-3 * en.initial);
+}
+
 // Two balls whose centres coincide have no normal between them. They must still be opened, as
 // any overlap is: along "up" (against gravity, +y without it), the lower index below, by the
 // overlap pass alone (positions, inverse-mass weighted: the centre of mass stays put, no

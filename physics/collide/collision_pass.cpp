@@ -198,9 +198,12 @@ void CollisionPass::keep_rest_on_walls(ParticleState& s, double impact) {
     // A particle resting on a wall that the contacts left moving into it as fast as an impact is
     // struck: the wall holds it no longer, so that the kernel's next step bounces it (with the
     // walls' restitution and its ledger) instead of taking the normal velocity away unrecorded.
-    // One left moving into it or away from it slower than an impact keeps resting (the solver's
-    // round-off, not a lift or a bounce): that normal velocity is taken away here, and its
-    // energy booked as the contacts' work.
+    // One left moving away from it as fast as an impact (struck off it: a small ball striking a
+    // big one low) keeps that velocity: the kernel's next step lifts it off (release_walls, a lift
+    // event). One left moving into it or away from it slower than an impact keeps resting (the
+    // solver's round-off, not a lift or a bounce): that normal velocity is taken away here, and
+    // its energy booked as the contacts' work. (Struck away, it was held at rest above the floor
+    // where its path had carried it, gliding on nothing.)
     for (const std::uint32_t i : moved_) {
         if (!s.resting[i]) continue;
         for (int w = 0; w < wall_count; ++w) {
@@ -209,7 +212,7 @@ void CollisionPass::keep_rest_on_walls(ParticleState& s, double impact) {
             const double away = glm::dot(v, n);
             if (away <= -impact) {
                 s.resting[i] &= static_cast<std::uint8_t>(~(1u << w));
-            } else if (away != 0.0) {
+            } else if (away != 0.0 && away < impact) {
                 s.set_velocity(i, v - away * n);
                 if (!s.collision_work.empty()) s.collision_work[i] -= 0.5 * s.inertial_mass[i] * away * away;
             }
@@ -327,6 +330,7 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
 std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h, std::size_t threads) {
     for (const std::uint32_t i : moved_) touched_[i] = 0;
     moved_.clear();
+    wall_bounces_.clear();
     hold_sleepers(s);
     build_boxes(s, threads);
     // Pairs of two sleeping particles are left out: with every particle asleep there are none,

@@ -22,6 +22,7 @@
 #include "physics/collide/contact_solver.hpp"
 #include "physics/collide/sleep_islands.hpp"
 #include "physics/model/scene.hpp"
+#include "physics/stepping/events.hpp"
 #include "physics/stepping/particle_state.hpp"
 
 #include <cstdint>
@@ -83,6 +84,9 @@ public:
         double share;
     };
     const std::vector<DeepOverlap>& deep_overlaps() const { return deep_overlaps_; }
+    // The last step's wall hits taken in the impact passes (wall_hits.cpp), as bounce events
+    // whose t is the time into the step.
+    const std::vector<Event>& wall_bounces() const { return wall_bounces_; }
 
 private:
     // A hit of particles a and b, or of particle a with wall w (b = wall_hit + w), at time t of
@@ -143,6 +147,7 @@ private:
     SleepIslands islands_;
     std::uint64_t resting_ = 0;
     std::vector<DeepOverlap> deep_overlaps_;
+    std::vector<Event> wall_bounces_;
 };
 
 }  // namespace pl::collide

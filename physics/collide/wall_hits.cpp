@@ -75,6 +75,8 @@ void CollisionPass::resolve_wall(ParticleState& s, const Model& m, const Hit& hi
     const double lost = e0 - motion_energy(s, i);
     s.dissipated_bounce[i] += bounce;
     s.dissipated_friction[i] += lost - bounce;
+    wall_bounces_.push_back({hit.t, i, static_cast<std::int8_t>(wall), EventKind::bounce, glm::length(s.velocity(i) - r.dv_a),
+                             glm::length(s.velocity(i))});
     // Bounced off faster than an impact, it no longer rests on that wall.
     if (c.restitution * speed_in > impact) s.resting[i] &= static_cast<std::uint8_t>(~(1u << wall));
     touch(i);

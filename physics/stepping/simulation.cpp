@@ -124,6 +124,11 @@ void Simulation::collide_step() {
     collisions_total_ += collisions_last_step_;
     for (const std::uint32_t i : collisions_->moved()) release_from_walls(i, state_.velocity(i));
     book_pile_events(step_events);
+    const double step_start = time() - dt();
+    for (Event e : collisions_->wall_bounces()) {
+        e.t += step_start;
+        events_.push_back(e);
+    }
     const WarningSink sink{&warnings_, &warned_};
     for (const collide::CollisionPass::DeepOverlap& o : collisions_->deep_overlaps())
         sink.raise(WarningKind::collision_overlap, o.a, time(), o.share);
