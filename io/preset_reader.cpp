@@ -301,15 +301,13 @@ void Reader::check_fits(const Room& room, const Scene& scene) {
                                                number_text(0.5 * smallest), number_text(scene.emitter->radius_max)));
 }
 
-// With collisions on (in the scene or any variant), the balls may not start packed beyond the
-// space they start in (physics/model/start_packing.hpp): the emitter's by their volume fraction,
-// the listed ones' by their overlapping pairs.
-// Without collisions overlaps cost nothing, and are allowed.
+// With collisions on in some run (collides_in_some_run: the scene's, or a variant's that replaces
+// it), the balls may not start packed beyond the space they start in
+// (physics/model/start_packing.hpp): the emitter's by their volume fraction, the listed ones' by
+// their overlapping pairs. Without collisions overlaps cost nothing, and are allowed: a scene
+// whose every variant turns collisions off never collides.
 void Reader::check_start_packing(const Scene& scene) {
-    const bool collisions = scene.collisions.enabled ||
-                            std::any_of(scene.variants.begin(), scene.variants.end(),
-                                        [](const Variant& v) { return v.collisions && v.collisions->enabled; });
-    if (!collisions) return;
+    if (!collides_in_some_run(scene)) return;
     const std::string most = number_text(max_start_volume_fraction);
     const Emitter* e = scene.emitter ? &*scene.emitter : nullptr;
     if (e && e->count >= 2 && emitter_radius_ok_ && emitter_count_ok_ && emitter_region_ok_) {

@@ -5,6 +5,7 @@
 #include "temp_dir.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -200,6 +201,15 @@ TEST(BadPresetCatalogue, AClumpIsRefusedOnlyWithCollisions) {
         ASSERT_NE(at, std::string::npos) << suffix;
         const LoadResult off = parse_preset(std::string(clump).replace(at, on.size(), R"("enabled": false)"));
         EXPECT_TRUE(off.ok()) << suffix << ": " << off.error_text();
+        // On in the scene, off in every variant: no run collides, so it loads (the runs are the
+        // variants'); with one variant that keeps the scene's collisions it is refused.
+        nlohmann::json scene = nlohmann::json::parse(clump);
+        scene["collisions"] = {{"enabled", true}};
+        for (nlohmann::json& v : scene["variants"]) v["collisions"] = {{"enabled", false}};
+        const LoadResult none_collides = parse_preset(scene.dump());
+        EXPECT_TRUE(none_collides.ok()) << suffix << ": " << none_collides.error_text();
+        scene["variants"][0].erase("collisions");
+        EXPECT_FALSE(parse_preset(scene.dump()).ok()) << suffix << ": the first variant collides";
     }
 }
 

@@ -24,6 +24,13 @@ Model model_for_variant(const Scene& scene, std::size_t variant) {
     return m;
 }
 
+bool collides_in_some_run(const Scene& scene) {
+    if (scene.variants.empty()) return scene.collisions.enabled;
+    for (std::size_t v = 0; v < scene.variants.size(); ++v)
+        if (model_for_variant(scene, v).collisions.enabled) return true;
+    return false;
+}
+
 std::vector<ParticleSpec> initial_particles(const Scene& scene) {
     std::vector<ParticleSpec> out = scene.particles;
     // Appended in place: a copy of the emitted particles would double the peak at millions.

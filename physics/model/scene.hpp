@@ -188,6 +188,10 @@ struct Model {
 
 std::size_t variant_count(const Scene& scene);  // >= 1
 Model model_for_variant(const Scene& scene, std::size_t variant);
+// Whether some run of the scene collides: the scene's model with no variants, else the model of
+// some variant (model_for_variant: a variant's collisions section replaces the scene's). The one
+// definition the reader's check of packed starts and the resource estimate share.
+bool collides_in_some_run(const Scene& scene);
 // The explicit particles followed by the emitter's, identical for every variant.
 std::vector<ParticleSpec> initial_particles(const Scene& scene);
 
