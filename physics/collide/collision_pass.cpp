@@ -120,22 +120,27 @@ void CollisionPass::touch(std::uint32_t i) {
     moved_.push_back(i);
 }
 
+double CollisionPass::strike(ParticleState& s, std::uint32_t i, double t, const Vec3& dv, const Vec3& dw, bool spin) {
+    path_start_[i] = at(i, t);
+    path_time_[i] = t;
+    path_rate_[i] += dv;
+    const double e0 = motion_energy(s, i);
+    s.set_velocity(i, s.velocity(i) + dv);
+    if (spin) s.set_spin(i, s.spin(i) + dw);
+    // The solver books its work from the start's velocity and spin, with the impacts' added
+    // (an impact's work is booked where it is struck: the solver's would count its dv twice).
+    start_velocity_[i] += dv;
+    if (spin) start_spin_[i] += dw;
+    touch(i);
+    return motion_energy(s, i) - e0;
+}
+
 void CollisionPass::resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin) {
     const CollisionSettings& c = m.collisions;
     const ImpulseResult r = sphere_impulse(body_of(s, hit.a), body_of(s, hit.b), hit.n, c.restitution, c.friction, spin);
     for (const auto& [i, dv, dw] : {std::tuple{hit.a, r.dv_a, r.dw_a}, std::tuple{hit.b, r.dv_b, r.dw_b}}) {
-        path_start_[i] = at(i, hit.t);
-        path_time_[i] = hit.t;
-        path_rate_[i] += dv;
-        const double e0 = motion_energy(s, i);
-        s.set_velocity(i, s.velocity(i) + dv);
-        if (spin) s.set_spin(i, s.spin(i) + dw);
-        // The solver books its work from the start's velocity and spin, with the impacts' added
-        // (an impact's work is booked here: the solver's would count its dv twice).
-        start_velocity_[i] += dv;
-        if (spin) start_spin_[i] += dw;
-        if (!s.collision_work.empty()) s.collision_work[i] += motion_energy(s, i) - e0;
-        touch(i);
+        const double gained = strike(s, i, hit.t, dv, dw, spin);
+        if (!s.collision_work.empty()) s.collision_work[i] += gained;
     }
 }
 

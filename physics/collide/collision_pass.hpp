@@ -107,6 +107,9 @@ private:
     void list_pair_particles();
     void index_pairs();
     void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass);
+    // Particle i takes dv (and dw) at time t of the step: its path bends there, and the solver's
+    // start velocity (and spin) takes the change too. Returns the change of its energy of motion.
+    double strike(ParticleState& s, std::uint32_t i, double t, const Vec3& dv, const Vec3& dw, bool spin);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
     // The walls inside the passes (wall_hits.cpp): the wall each particle the last pass resolved
     // lies against and moves into, appended to hits_, and one such hit resolved.

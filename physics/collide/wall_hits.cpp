@@ -18,7 +18,6 @@
 #include "physics/collide/particle_body.hpp"
 #include "physics/model/restitution.hpp"
 #include "physics/stepping/contact.hpp"
-#include "physics/stepping/energy.hpp"
 
 #include <limits>
 
@@ -61,25 +60,17 @@ void CollisionPass::resolve_wall(ParticleState& s, const Model& m, const Hit& hi
     const Body still{Vec3(0.0), Vec3(0.0), infinite, 0.0, infinite};
     const ImpulseResult r = sphere_impulse(body_of(s, i), still, hit.n, c.restitution, c.friction, m.contact.spin);
     if (!r.applied) return;
-    path_start_[i] = at(i, hit.t);
-    path_time_[i] = hit.t;
-    path_rate_[i] += r.dv_a;
-    const double e0 = motion_energy(s, i);
-    s.set_velocity(i, s.velocity(i) + r.dv_a);
-    if (m.contact.spin) s.set_spin(i, s.spin(i) + r.dw_a);
-    start_velocity_[i] += r.dv_a;  // an impact: the solver books its work from after it
-    if (m.contact.spin) start_spin_[i] += r.dw_a;
+    const double speed_before = glm::length(s.velocity(i));
+    const double lost = -strike(s, i, hit.t, r.dv_a, r.dw_a, m.contact.spin);
     // The walls' ledger lines, as the kernel books a bounce: the normal speed's loss, the rest
     // (the slip's) to friction.
     const double bounce = 0.5 * s.inertial_mass[i] * speed_in * speed_in * (1.0 - c.restitution * c.restitution);
-    const double lost = e0 - motion_energy(s, i);
     s.dissipated_bounce[i] += bounce;
     s.dissipated_friction[i] += lost - bounce;
-    wall_bounces_.push_back({hit.t, i, static_cast<std::int8_t>(wall), EventKind::bounce, glm::length(s.velocity(i) - r.dv_a),
-                             glm::length(s.velocity(i))});
+    wall_bounces_.push_back(
+        {hit.t, i, static_cast<std::int8_t>(wall), EventKind::bounce, speed_before, glm::length(s.velocity(i))});
     // Bounced off faster than an impact, it no longer rests on that wall.
     if (c.restitution * speed_in > impact) s.resting[i] &= static_cast<std::uint8_t>(~(1u << wall));
-    touch(i);
 }
 
 }  // namespace pl::collide

@@ -25,8 +25,7 @@ Model model_for_variant(const Scene& scene, std::size_t variant) {
 }
 
 bool collides_in_some_run(const Scene& scene) {
-    if (scene.variants.empty()) return scene.collisions.enabled;
-    for (std::size_t v = 0; v < scene.variants.size(); ++v)
+    for (std::size_t v = 0; v < variant_count(scene); ++v)
         if (model_for_variant(scene, v).collisions.enabled) return true;
     return false;
 }
