@@ -1,6 +1,7 @@
 // Particle-particle collisions (physics/collide/) against closed forms: 1D impacts with any
 // restitution (with bare masses and with added mass), the equal-mass elastic glancing impact (paths at 90 degrees), Newton's cradle, a
-// head-on pair far faster than the step can resolve by overlap, the off switch, and the warning
+// head-on pair far faster than the step can resolve by overlap, impacts that interleave in one step
+// (resolved in time order), a struck ball's wall bounce in the same step, the off switch, and the warning
 // when a step leaves two balls inside each other.
 #include "physics/collide/collision_pass.hpp"
 #include "physics/collide/narrow_phase.hpp"
@@ -126,6 +127,30 @@ TEST(Collision, FastHeadOnPairDoesNotPassThrough) {
     }
 }
 
+// Four equal balls on a line, e = 1, one step of 9.5 ms: A strikes B at 1 ms and B passes the
+// blow to C, which touches it; C meets the oncoming D at 5 ms, runs back into B at 9 ms, and B
+// passes that blow to A. Each impact swaps the velocities. Taking the first contacts on the
+// unbent paths first ((A, B) at 1 ms, and (C, D) at 9 ms, C still at rest), B's blow reached C
+// only after C had turned back at 9 ms, the two 40% inside each other: in the order of their
+// times, every ball ends where the closed form puts it.
+TEST(Collision, ImpactsInOneStepAreResolvedInTheOrderOfTheirTimes) {
+    const double r = 0.1, v = 10.0, dt = 0.0095;
+    Model m = free_space(1.0, dt);
+    m.room.size = {20.0, 20.0, 20.0};
+    Simulation sim(m, {ball({0.0, 0, 0}, {v, 0, 0}, 1.0, r), ball({0.21, 0, 0}, {0, 0, 0}, 1.0, r),
+                       ball({0.41, 0, 0}, {0, 0, 0}, 1.0, r), ball({0.70, 0, 0}, {-v, 0, 0}, 1.0, r)});
+    sim.step();
+    const ParticleState& s = sim.state();
+    const double x[4] = {0.01 - v * (dt - 0.009), 0.21, 0.41, 0.65 + v * (dt - 0.005)};
+    const double vx[4] = {-v, 0.0, 0.0, v};
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_NEAR(s.x[i], x[i], 1e-9) << i;
+        EXPECT_NEAR(s.vx[i], vx[i], 1e-9) << i;
+    }
+    EXPECT_EQ(sim.collisions_total(), 5u);
+    EXPECT_TRUE(sim.collision_pass()->deep_overlaps().empty());
+}
+
 TEST(Collision, OffByDefaultParticlesPassThrough) {
     Model m = free_space(1.0);
     m.collisions = CollisionSettings{};
@@ -196,6 +221,28 @@ TEST(Collision, ABigBallStruckLowLeavesTheFloorAndTheSmallOneBouncesInTheStep) {
     const EnergyBreakdown en = total_energy(sim.state(), m.world.gravity, m.room);
     EXPECT_NEAR(en.dissipated_bounce, 0.5 * 1.0 * 0.75 * in.y * in.y, 1e-9);
     EXPECT_LT(std::abs(en.residual()), 1e-3 * en.initial);
+}
+
+// A ball struck toward a near wall meets it within the step: A strikes B at 1 ms, B reaches the
+// wall 5 cm away at 6 ms and bounces (e = 1), and ends the 10 ms step 4 cm back from the wall,
+// moving away. Before, B was held against the wall at the step's end, still moving into it, and
+// bounced a step late.
+TEST(Collision, ABallStruckTowardAWallBouncesOffItInTheSameStep) {
+    const double r = 0.1, v = 10.0, dt = 0.01, wall = 10.0;
+    Model m = free_space(1.0, dt);
+    m.room.size = {2 * wall, 2 * wall, 2 * wall};
+    const double xb = wall - r - 0.05, xa = xb - 2 * r - 0.01;
+    Simulation sim(m, {ball({xa, 0, 0}, {v, 0, 0}, 1.0, r), ball({xb, 0, 0}, {0, 0, 0}, 1.0, r)});
+    sim.step();
+    const ParticleState& s = sim.state();
+    EXPECT_NEAR(s.x[0], xa + 0.01, 1e-9);
+    EXPECT_NEAR(s.vx[0], 0.0, 1e-9);
+    EXPECT_NEAR(s.x[1], wall - r - v * (dt - 0.006), 1e-9);
+    EXPECT_NEAR(s.vx[1], -v, 1e-9);
+    ASSERT_EQ(sim.events().size(), 1u);
+    EXPECT_EQ(sim.events()[0].kind, EventKind::bounce);
+    EXPECT_EQ(sim.events()[0].particle, 1u);
+    EXPECT_NEAR(sim.events()[0].t, 0.006, 1e-9);
 }
 
 // Two balls whose centres coincide have no normal between them. They must still be opened, as

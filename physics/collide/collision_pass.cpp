@@ -26,7 +26,7 @@ void move_to(ParticleState& s, const Model& m, std::uint32_t i, const Vec3& x) {
 
 CollisionPass::CollisionPass(std::size_t particles)
     : start_(particles), start_velocity_(particles), start_spin_(particles), path_start_(particles), path_rate_(particles), path_time_(particles),
-      stamp_(particles, 0), touched_(particles, 0), listed_(particles, 0), row_(particles, 0), islands_(particles) {
+      strikes_(particles, 0), stamp_(particles, 0), touched_(particles, 0), listed_(particles, 0), row_(particles, 0), islands_(particles) {
     boxes_.resize(particles);
 }
 
@@ -108,7 +108,7 @@ bool CollisionPass::find_hit(const ParticleState& s, const Pair& p, double h, bo
     const Vec3 gap = d + s_hit * w;
     const double len = glm::length(gap);
     if (!(len > 0.0)) return false;  // concentric: no normal to push along
-    hit = {t0 + s_hit, p.a, p.b, gap / len};
+    hit = {t0 + s_hit, p.a, p.b, gap / len, strikes_[p.a], strikes_[p.b]};
     // An impact needs a contact point that closes (its velocity, not the path's rate) faster than
     // `impact`; slower ones are the contact solver's.
     return glm::dot(contact_velocity(body_of(s, p.a), body_of(s, p.b), hit.n, spin), hit.n) < -impact;
@@ -226,9 +226,13 @@ void CollisionPass::keep_rest_on_walls(ParticleState& s, double impact) {
 }
 
 void CollisionPass::find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads) {
-    // Each queued pair's first contact along the current paths; threaded in slices of the queue
-    // (the hits are sorted afterwards, so the result is the same on any number of threads).
     hits_.clear();
+    append_hits(s, h, spin, impact, threads);
+}
+
+void CollisionPass::append_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads) {
+    // Each queued pair's first contact along the current paths, appended to hits_; threaded in
+    // slices of the queue, joined in order (the same hits on any number of threads).
     append_in_slices(queue_.size(), threads, 4096, slice_hits_, hits_,
                      [&](std::size_t begin, std::size_t end, std::vector<Hit>& out) {
                          Hit hit;
@@ -276,17 +280,29 @@ void CollisionPass::index_pairs() {
     pair_queued_.assign(pairs_.size(), 0);
 }
 
-void CollisionPass::queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass) {
-    // Only a pair with a particle whose path the last pass changed can hold a new first contact:
-    // the others keep their paths, so they had no hit then and have none now (a hit both of whose
-    // particles were free would have been resolved).
+void CollisionPass::queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t event) {
+    // Only a pair with a particle whose path the impact changed can hold a new first contact: the
+    // others keep their paths, and their first contacts are in the queue already. A pair of the
+    // two struck particles is queued once (`event` stamps it).
     queue_.clear();
     for (const std::uint32_t i : resolved)
         for (std::uint32_t k = pair_start_[row_[i]]; k < pair_start_[row_[i] + 1]; ++k)
-            if (pair_queued_[pair_of_[k]] != pass) {
-                pair_queued_[pair_of_[k]] = pass;
+            if (pair_queued_[pair_of_[k]] != event) {
+                pair_queued_[pair_of_[k]] = event;
                 queue_.push_back(pair_of_[k]);
             }
+}
+
+bool CollisionPass::still_current(const Hit& hit) const {
+    // Neither particle was struck since the hit was found (else its path bent: the hit is stale,
+    // and the particle's pairs were searched again), and neither has used up its strikes.
+    const bool a_current = strikes_[hit.a] == hit.strikes_a && hit.strikes_a < max_strikes;
+    return a_current && (hit.is_wall() || (strikes_[hit.b] == hit.strikes_b && hit.strikes_b < max_strikes));
+}
+
+void CollisionPass::queue_hits(std::size_t from) {
+    for (std::size_t k = from + 1; k <= hits_.size(); ++k)
+        std::push_heap(hits_.begin(), hits_.begin() + static_cast<std::ptrdiff_t>(k), later);
 }
 
 std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, double h, double impact,
@@ -297,36 +313,37 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
         path_rate_[i] = (s.position(i) - start_[i]) / h;
     }
     const bool spin = spin_matters(m);
-    std::uint64_t impulses = 0;
     queue_.resize(pairs_.size());
-    for (std::uint32_t k = 0; k < pairs_.size(); ++k) queue_[k] = k;  // the first pass: every pair
+    for (std::uint32_t k = 0; k < pairs_.size(); ++k) queue_[k] = k;  // first: every pair
     resolved_.clear();
-    for (std::uint32_t pass = 1; pass <= static_cast<std::uint32_t>(max_passes); ++pass) {
-        find_hits(s, h, spin, impact, threads);
-        find_wall_hits(s, m, h, impact);  // of the particles the last pass resolved
-        if (hits_.empty()) break;
-        std::sort(hits_.begin(), hits_.end(), [](const Hit& x, const Hit& y) {
-            return x.t != y.t ? x.t < y.t : (x.a != y.a ? x.a < y.a : x.b < y.b);
-        });
-        resolved_.clear();
-        for (const Hit& c : hits_) {
-            // Each particle once a pass: its path changed, so its later hits are the next pass's.
-            if (stamp_[c.a] == pass || (!c.is_wall() && stamp_[c.b] == pass)) continue;
-            stamp_[c.a] = pass;
-            resolved_.push_back(c.a);
-            if (c.is_wall()) {
-                resolve_wall(s, m, c, impact);
-                continue;
-            }
-            stamp_[c.b] = pass;
+    find_hits(s, h, spin, impact, threads);
+    if (hits_.empty()) return 0;
+    index_pairs();
+    std::make_heap(hits_.begin(), hits_.end(), later);
+    std::uint64_t impulses = 0;
+    for (std::uint32_t event = 1; !hits_.empty();) {
+        std::pop_heap(hits_.begin(), hits_.end(), later);
+        const Hit c = hits_.back();
+        hits_.pop_back();
+        if (!still_current(c)) continue;
+        resolved_.assign(1, c.a);
+        if (c.is_wall()) {
+            if (!resolve_wall(s, m, c, impact)) continue;
+        } else {
             resolve(s, m, c, spin);
             resolved_.push_back(c.b);
             ++impulses;
         }
-        if (pass == 1) index_pairs();
-        queue_pairs_of(resolved_, pass + 1);
+        for (const std::uint32_t i : resolved_) ++strikes_[i];
+        // The struck particles' paths bent at c.t: their pairs' first contacts from then on, and
+        // the wall each lies against.
+        queue_pairs_of(resolved_, event++);
+        const std::size_t from = hits_.size();
+        append_hits(s, h, spin, impact, threads);
+        find_wall_hits(s, m, h, impact);
+        queue_hits(from);
     }
-    for (const std::uint32_t i : moved_) stamp_[i] = 0;  // only resolved particles carry a stamp
+    for (const std::uint32_t i : moved_) strikes_[i] = 0;  // only struck particles carry strikes
     const RoomBounds room(m.room);
     for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(at(i, h), s.radius[i]));
     return impulses;

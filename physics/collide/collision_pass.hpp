@@ -5,15 +5,18 @@
 // pairs left overlapping, and lets still islands fall asleep (sleep_islands.hpp).
 //
 // Impacts: each particle's path over the step is taken as linear from where it started to where
-// the step put it. Passes repeat until no pair closes (Guendelman, Bridson & Fedkiw, "Nonconvex
-// rigid bodies with stacking", SIGGRAPH 2003: sequential impulses, pass after pass): a pass
-// gathers the first contact of every candidate pair, sorts them by (time, a, b) and resolves them
-// in that order, each particle at most once per pass (its path changed, so its later contacts are
-// found again by the next pass). A struck particle that lies against a wall and now moves into it
-// takes that wall hit in the next pass (wall_hits.cpp). A resolved pair meets at its time of impact, takes its impulse
-// there and moves on with its new velocity for the rest of the step, so a fast pair cannot pass
-// through each other whatever the step. Searches run threaded, but every order is fixed and the
-// impulses are applied on one thread: the result is the same bits on any number of threads.
+// the step put it. The impacts are resolved one at a time in the order of their times, as an
+// event-driven simulation of hard spheres does (Alder & Wainwright, J. Chem. Phys. 31, 459, 1959;
+// Rapaport, "The Art of Molecular Dynamics Simulation", 2004, ch. 14): every candidate pair's first
+// contact goes in a queue ordered by (time, a, b); the earliest is taken, the pair takes its
+// impulse there and moves on with its new velocity for the rest of the step, and the first
+// contacts of every pair of the two struck particles are found again from that time on. A hit
+// found before one of its particles was struck again is stale and passed over (each hit carries
+// its particles' strike counts). So no pair is resolved out of time order, and a fast pair cannot
+// pass through each other whatever the step. A struck particle that lies against a wall and now
+// moves into it takes that wall hit in the queue too (wall_hits.cpp). The first search runs
+// threaded, but every order is fixed and the impulses are applied on one thread: the result is
+// the same bits on any number of threads.
 // Everything the pass changes (velocities, spins, positions) is booked in each particle's
 // collision work, so the energy ledger's residual is the stepping method's own error.
 #pragma once
@@ -26,15 +29,17 @@
 #include "physics/stepping/particle_state.hpp"
 
 #include <cstdint>
+#include <tuple>
 #include <vector>
 
 namespace pl::collide {
 
 class CollisionPass {
 public:
-    // At most this many passes per step; contacts still closing after them are found again at the
-    // start of the next step (as touching pairs, time of impact 0).
-    static constexpr int max_passes = 64;
+    // At most this many impacts per particle per step (a ball caught between a heavy one and a
+    // wall, or an inelastic collapse, would take endlessly many); its contacts still closing
+    // after them are the contact solver's, or found again at the start of the next step.
+    static constexpr std::uint32_t max_strikes = 64;
     // Overlap removal: the share of an overlap corrected per step, at most max_correction of the
     // pair's contact distance per step (deep overlaps, e.g. from an emitter, open over several
     // steps instead of throwing particles), and the overlap left alone (as a fraction of the
@@ -84,37 +89,45 @@ public:
         double share;
     };
     const std::vector<DeepOverlap>& deep_overlaps() const { return deep_overlaps_; }
-    // The last step's wall hits taken in the impact passes (wall_hits.cpp), as bounce events
+    // The last step's wall hits taken among the impacts (wall_hits.cpp), as bounce events
     // whose t is the time into the step.
     const std::vector<Event>& wall_bounces() const { return wall_bounces_; }
 
 private:
     // A hit of particles a and b, or of particle a with wall w (b = wall_hit + w), at time t of
-    // the step; n from a to b (into the wall).
+    // the step; n from a to b (into the wall); the strike counts of a and b when it was found.
     struct Hit {
         double t;
         std::uint32_t a, b;
         Vec3 n;
+        std::uint32_t strikes_a = 0, strikes_b = 0;
         bool is_wall() const { return b >= wall_hit; }
     };
+    // The queue's order: x comes after y (a min-heap on (t, a, b), the strike counts last).
+    static bool later(const Hit& x, const Hit& y) {
+        return std::tie(x.t, x.a, x.b, x.strikes_a, x.strikes_b) > std::tie(y.t, y.a, y.b, y.strikes_a, y.strikes_b);
+    }
+    bool still_current(const Hit& hit) const;
     static constexpr std::uint32_t wall_hit = 0xfffffff0u;
     void build_boxes(const ParticleState& s, std::size_t threads);
     Vec3 at(std::uint32_t i, double t) const { return path_start_[i] + (t - path_time_[i]) * path_rate_[i]; }
     bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const;
     void hold_sleepers(ParticleState& s);
     void find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
+    void append_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
     std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, double impact, std::size_t threads);
     void list_pair_particles();
     void index_pairs();
-    void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t pass);
+    void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t event);
+    void queue_hits(std::size_t from);
     // Particle i takes dv (and dw) at time t of the step: its path bends there, and the solver's
     // start velocity (and spin) takes the change too. Returns the change of its energy of motion.
     double strike(ParticleState& s, std::uint32_t i, double t, const Vec3& dv, const Vec3& dw, bool spin);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
-    // The walls inside the passes (wall_hits.cpp): the wall each particle the last pass resolved
-    // lies against and moves into, appended to hits_, and one such hit resolved.
+    // The walls among the impacts (wall_hits.cpp): the wall each particle just struck lies
+    // against and moves into, appended to hits_, and one such hit resolved.
     void find_wall_hits(const ParticleState& s, const Model& m, double h, double impact);
-    void resolve_wall(ParticleState& s, const Model& m, const Hit& hit, double impact);
+    bool resolve_wall(ParticleState& s, const Model& m, const Hit& hit, double impact);  // false: no impulse
     void remove_overlaps(ParticleState& s, const Model& m);
     void note_deep_overlap(const Pair& p, double contact, double distance);
     void keep_rest_on_walls(ParticleState& s, double impact);
@@ -126,9 +139,9 @@ private:
     // moves at path_rate_ (m/s) until the step's end.
     std::vector<Vec3> path_start_, path_rate_;
     std::vector<double> path_time_;
-    // Per particle: the pass number that last resolved it, during the impacts; `corrected` once
-    // the overlap removal moved it (corrected_ lists those, to set back to 0).
-    std::vector<std::uint32_t> stamp_, corrected_;
+    // Per particle: the impacts it took this step (0 for the untouched); `corrected` in stamp_
+    // once the overlap removal moved it (corrected_ lists those, to set back to 0).
+    std::vector<std::uint32_t> strikes_, stamp_, corrected_;
     static constexpr std::uint32_t corrected = 0xffffffffu;
     std::vector<std::uint8_t> touched_;
     std::vector<std::uint8_t> listed_;  // per particle: 1 while list_pair_particles runs
@@ -140,8 +153,8 @@ private:
     PairCache pair_cache_;
     std::vector<Pair> pairs_;
     std::vector<Hit> hits_;
-    // The impact passes: the pairs a pass searches (all, then those of the particles the last
-    // pass resolved), and each particle's pairs to find them (index_pairs).
+    // The impacts: the pairs to search (all, then those of the particles just struck), the
+    // particles just struck, and each particle's pairs to find them (index_pairs).
     std::vector<std::uint32_t> queue_, resolved_, pair_start_, pair_fill_, pair_of_, pair_queued_;
     std::vector<std::uint32_t> row_;     // per particle: its row of pairs (valid for pair_particles_)
     std::vector<std::uint32_t> pair_particles_;  // the particles of pairs_, each once (list_pair_particles)

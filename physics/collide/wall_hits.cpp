@@ -1,17 +1,14 @@
-// The walls inside the impact passes (collision_pass.hpp). The kernel meets the walls on its own
-// path, once a step. A light ball pressed on the floor by a heavy one bounces between the two many
-// times in an instant: met only by the kernel, it took one floor bounce and one blow a step, and
-// a column of unlike masses sank into its bottom ball, the balls passing through each other. So a
-// particle the pass strikes while it lies against a wall (within the contact solver's margin,
-// ContactSolver::contact_margin of its radius) and that now moves into it faster than an impact
-// takes that wall hit in the passes, among the pairs' hits in time order, with the walls'
-// restitution law and friction (the kernel's impact: Newton's law on the normal speed, Coulomb
-// friction that at most stops the slip, the spin's share where contact.spin couples it) and the
-// walls' ledger lines (bounce and friction losses). Struck particles farther from a wall meet it
-// in the kernel's next step, as before: resolving those in the passes too left more pairs inside
-// each other where a crowd is struck hard (10,000 poured balls: a pair 11% inside at 0.58 s),
-// as the passes resolve hits out of time order across passes (a later pass can change a path at
-// an earlier time than one an earlier pass set), and every extra path change is one more chance.
+// The walls among the impacts (collision_pass.hpp). The kernel meets the walls on its own path,
+// once a step; an impact bends a particle's path after that. A light ball pressed on the floor by
+// a heavy one bounces between the two many times in an instant: met only by the kernel, it took
+// one floor bounce and one blow a step, and a column of unlike masses sank into its bottom ball,
+// the balls passing through each other. And a ball struck toward a near wall was held against it
+// at the step's end, still moving into it, and bounced a step late. So a particle the pass
+// strikes whose new path reaches a wall before the step ends (or touches it already), moving
+// into it faster than an impact, takes that wall hit in the queue, among the pairs' hits in time order, with the
+// walls' restitution law and friction (the kernel's impact: Newton's law on the normal speed,
+// Coulomb friction that at most stops the slip, the spin's share where contact.spin couples it)
+// and the walls' ledger lines (bounce and friction losses).
 #include "physics/collide/collision_pass.hpp"
 
 #include "physics/collide/narrow_phase.hpp"
@@ -24,8 +21,8 @@
 namespace pl::collide {
 
 void CollisionPass::find_wall_hits(const ParticleState& s, const Model& m, double h, double impact) {
-    // The wall each just-resolved particle lies against and moves into faster than an impact
-    // (slower contacts are the solver's), the first its path reaches where there are several.
+    // The first wall each just-struck particle's path reaches in the step (or touches),
+    // moving into it faster than an impact (slower contacts are the solver's).
     const RoomBounds room(m.room);
     for (const std::uint32_t i : resolved_) {
         Hit first{h, i, 0, Vec3(0.0)};
@@ -34,7 +31,6 @@ void CollisionPass::find_wall_hits(const ParticleState& s, const Model& m, doubl
             const Vec3 inward = RoomBounds::inward_normal(w);
             if (!(-glm::dot(s.velocity(i), inward) > impact)) continue;
             const double gap = room.distance(w, path_start_[i], s.radius[i]);
-            if (gap > ContactSolver::contact_margin * s.radius[i]) continue;  // not against it
             const double rate = glm::dot(path_rate_[i], inward);  // < 0: the path runs into it
             double t = path_time_[i];
             if (gap > 0.0) {
@@ -42,14 +38,14 @@ void CollisionPass::find_wall_hits(const ParticleState& s, const Model& m, doubl
                 t += gap / -rate;
             }
             if (t > first.t || (found && t == first.t)) continue;
-            first = {t, i, wall_hit + static_cast<std::uint32_t>(w), -inward};
+            first = {t, i, wall_hit + static_cast<std::uint32_t>(w), -inward, strikes_[i], 0};
             found = true;
         }
         if (found) hits_.push_back(first);
     }
 }
 
-void CollisionPass::resolve_wall(ParticleState& s, const Model& m, const Hit& hit, double impact) {
+bool CollisionPass::resolve_wall(ParticleState& s, const Model& m, const Hit& hit, double impact) {
     // The wall as a body that does not move (infinite mass and moment): sphere_impulse then is
     // the kernel's wall impact, restitution from the walls' law at this normal speed.
     const std::uint32_t i = hit.a;
@@ -59,7 +55,7 @@ void CollisionPass::resolve_wall(ParticleState& s, const Model& m, const Hit& hi
     constexpr double infinite = std::numeric_limits<double>::infinity();
     const Body still{Vec3(0.0), Vec3(0.0), infinite, 0.0, infinite};
     const ImpulseResult r = sphere_impulse(body_of(s, i), still, hit.n, c.restitution, c.friction, m.contact.spin);
-    if (!r.applied) return;
+    if (!r.applied) return false;
     const double speed_before = glm::length(s.velocity(i));
     const double lost = -strike(s, i, hit.t, r.dv_a, r.dw_a, m.contact.spin);
     // The walls' ledger lines, as the kernel books a bounce: the normal speed's loss, the rest
@@ -71,6 +67,7 @@ void CollisionPass::resolve_wall(ParticleState& s, const Model& m, const Hit& hi
         {hit.t, i, static_cast<std::int8_t>(wall), EventKind::bounce, speed_before, glm::length(s.velocity(i))});
     // Bounced off faster than an impact, it no longer rests on that wall.
     if (c.restitution * speed_in > impact) s.resting[i] &= static_cast<std::uint8_t>(~(1u << wall));
+    return true;
 }
 
 }  // namespace pl::collide
