@@ -132,7 +132,7 @@ void BroadPhase::reuse_or_reset_order(const SweptBoxes& boxes) {
 
 void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t begin, std::size_t end,
                              Part& part) {
-    part.entries.clear();
+    part.fill = 0;
     part.big.clear();
     const std::uint32_t digit_mask = (1u << digit_) - 1;  // the radix sort's first digit, counted here
     part.count.assign(std::size_t{digit_mask} + 1, 0);
@@ -154,7 +154,8 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
             lo[k] = coordinate(lo_f[k], k);
             hi[k] = coordinate(hi_f[k], k);
         }
-        if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > max_cells) {
+        const std::uint64_t spanned = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+        if (spanned > max_cells) {
             part.big.push_back(i);
             continue;
         }
@@ -163,16 +164,39 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
             slot_box.lo[k] = lo_f[k];
             slot_box.hi[k] = hi_f[k];
         }
+        if (part.entries.size() < part.fill + max_cells)  // grown, never shrunk: no zeroing a call
+            part.entries.resize(std::max(2 * part.entries.size(), part.fill + max_cells));
+        Entry* out = part.entries.data() + part.fill;
         const std::uint32_t slot = static_cast<std::uint32_t>(n) | (asleep && asleep[i] ? 0u : awake_bit);
+        if (spanned > 1 && hi[0] - lo[0] <= 1 && hi[1] - lo[1] <= 1 && hi[2] - lo[2] <= 1) {
+            // Two cells along some axis, at most two along each (a box a fair share of the cell
+            // wide, which crosses a boundary about as often as not): the eight of a 2 x 2 x 2
+            // block written, and kept where they lie in the box, without a branch.
+            std::size_t kept = 0;
+            for (std::uint64_t dz = 0; dz <= 1; ++dz)
+                for (std::uint64_t dy = 0; dy <= 1; ++dy)
+                    for (std::uint64_t dx = 0; dx <= 1; ++dx) {
+                        const auto cell = static_cast<std::uint32_t>(linear(lo[0] + dx, lo[1] + dy, lo[2] + dz));
+                        out[kept] = {cell, slot | (dx == 0 ? first_x_bit : 0u) | (dy == 0 ? first_y_bit : 0u) |
+                                               (dz == 0 ? first_z_bit : 0u)};
+                        const std::uint32_t in =
+                            std::uint32_t(lo[0] + dx <= hi[0]) & std::uint32_t(lo[1] + dy <= hi[1]) & std::uint32_t(lo[2] + dz <= hi[2]);
+                        count[cell & digit_mask] += in;
+                        kept += in;
+                    }
+            part.fill += kept;
+            continue;
+        }
         for (std::uint64_t z = lo[2]; z <= hi[2]; ++z)
             for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
                 for (std::uint64_t x = lo[0]; x <= hi[0]; ++x) {
-                    Entry& e = part.entries.emplace_back();
+                    Entry& e = *out++;
                     e.cell = static_cast<std::uint32_t>(linear(x, y, z));
                     ++count[e.cell & digit_mask];
                     e.slot = slot | (x == lo[0] ? first_x_bit : 0u) | (y == lo[1] ? first_y_bit : 0u) |
                              (z == lo[2] ? first_z_bit : 0u);
                 }
+        part.fill += static_cast<std::size_t>(spanned);
     }
 }
 
@@ -214,8 +238,8 @@ void BroadPhase::radix_sort(std::size_t tasks) {
     std::size_t total = 0;
     sources_.resize(tasks);
     for (std::size_t t = 0; t < tasks; ++t) {
-        sources_[t] = {parts_[t].entries.data(), parts_[t].entries.data() + parts_[t].entries.size()};
-        total += parts_[t].entries.size();
+        sources_[t] = {parts_[t].entries.data(), parts_[t].entries.data() + parts_[t].fill};
+        total += parts_[t].fill;
     }
     if (entries_.size() < total) {  // grown, never cleared: no step pays for zeroing them
         entries_.resize(total);
@@ -239,15 +263,21 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
     // that reports them). A cell of sleeping entries only is passed over. The particles whose home
     // this cell is are appended to `homes` (the next call's order). Returns the number of cells.
     const std::size_t first_pair = pairs.size();
+    // A box has one home among its entries: each entry's id is written, and the write position
+    // moves on only for a home (no branch: which entries are homes is as good as random).
+    const std::size_t home_base = homes.size();
+    homes.resize(home_base + (end - begin));
+    std::uint32_t* home = homes.data() + home_base;
     std::size_t cells = 0;
     for (std::size_t run = begin; run < end; ++cells) {
-        const std::uint64_t cell = entries_[run].cell;
+        const std::uint32_t cell = entries_[run].cell;
         std::size_t run_end = run;
         std::uint32_t awake = 0;
         for (; run_end < end && entries_[run_end].cell == cell; ++run_end) {
             const std::uint32_t slot = entries_[run_end].slot;
             awake |= slot & awake_bit;
-            if ((slot & home_bits) == home_bits) homes.push_back(slot_id_[slot & slot_mask]);
+            *home = slot_id_[slot & slot_mask];
+            home += (slot & home_bits) == home_bits;
         }
         for (std::size_t p = run; awake && p + 1 < run_end; ++p) {
             const std::uint32_t sp = entries_[p].slot;
@@ -268,6 +298,7 @@ std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vect
         }
         run = run_end;
     }
+    homes.resize(static_cast<std::size_t>(home - homes.data()));
     if (exact_) keep_exact(pairs, first_pair);
     return cells;
 }

@@ -142,7 +142,8 @@ private:
     }
     // One thread's share of the particles: the entries it made and the big ones it found.
     struct Part {
-        std::vector<Entry> entries;
+        std::vector<Entry> entries;  // the first `fill` of them made by the last call
+        std::size_t fill = 0;
         std::vector<std::uint32_t> big;
         std::vector<std::uint32_t> count;  // radix sort histogram of its source
     };
