@@ -127,6 +127,29 @@ TEST(ContactFidelity, ElasticBouncesKeepEnergyForEveryMethodButExplicitEuler) {
     EXPECT_FALSE(keeps_bounce_energy(Method::explicit_euler));
 }
 
+// exact_under_constant_force (which the contact solver's push and its ledger follow) against what
+// one step of each method does under gravity alone, far from the walls: x1 = x0 + v0 h + g h^2 / 2
+// to round-off on the exact methods; the Euler methods off by g h^2 / 2 either way, which is the
+// push share's 1 (x0 + v1 h) or 0 (x0 + v0 h).
+TEST(ContactFidelity, TheMethodsExactUnderAConstantForceAreThoseWhoseStepIsExactUnderGravity) {
+    const double h = 0.01, g = 9.81;
+    for (Method method : {Method::explicit_euler, Method::semi_implicit_euler, Method::velocity_verlet, Method::rk4,
+                          Method::dopri5, Method::exponential}) {
+        Model m = drop_model(1.0, method, h, 0.0);
+        Simulation sim(m, {ParticleSpec{Vec3(0.0, 5.0, 0.0), Vec3(1.0, 2.0, 0.0), 0.1, 0.05}});
+        sim.step();
+        const double y = 5.0 + 2.0 * h - 0.5 * g * h * h;
+        const double off = (sim.state().y[0] - y) / (0.5 * g * h * h);  // in units of g h^2 / 2
+        if (exact_under_constant_force(method)) {
+            EXPECT_NEAR(off, 0.0, 1e-9) << to_string(method);
+            EXPECT_EQ(constant_push_share(method), 0.5) << to_string(method);
+        } else {
+            EXPECT_NEAR(std::abs(off), 1.0, 1e-9) << to_string(method);
+            EXPECT_EQ(constant_push_share(method), off < 0.0 ? 1.0 : 0.0) << to_string(method);
+        }
+    }
+}
+
 // Balls lying on the floor (not yet marked resting), sliding without friction, e = 1 and
 // rest_speed 0: one contact each to find they rest, then sliding, not bouncing in place.
 TEST(ContactFidelity, LyingOnTheFloorWithRestSpeedZeroIsRestingContact) {

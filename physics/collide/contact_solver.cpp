@@ -370,8 +370,8 @@ void ContactSolver::hand_back(ParticleState& s, const Model& m, double h, const 
     //    work is booked where it is struck) and v1. With gravity's m g h (v0 + v1) / 2 that is
     //    semi-implicit Euler's change of kinetic energy.
     // Either way a contact at rest (v0 = v1 = 0) does no work: a still pile books nothing.
-    const double share = constant_push_share(m.integrator.method), push = share * h;
-    const bool exact = share == 0.5;
+    const double push = constant_push_share(m.integrator.method) * h;
+    const bool exact = exact_under_constant_force(m.integrator.method);
     for (std::size_t k = 0; k < slot_particle_.size(); ++k) {
         const std::uint32_t i = slot_particle_[k];
         s.set_velocity(i, body_[k].v);

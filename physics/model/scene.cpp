@@ -136,16 +136,21 @@ int method_order(Method m) {
     return 1;
 }
 
-double constant_push_share(Method m) {
+bool exact_under_constant_force(Method m) {
     switch (m) {
-        case Method::explicit_euler: return 0.0;
-        case Method::semi_implicit_euler: return 1.0;
+        case Method::explicit_euler:
+        case Method::semi_implicit_euler: return false;
         case Method::velocity_verlet:
         case Method::rk4:
         case Method::dopri5:
-        case Method::exponential: return 0.5;
+        case Method::exponential: return true;
     }
-    return 1.0;
+    return false;
+}
+
+double constant_push_share(Method m) {
+    if (exact_under_constant_force(m)) return 0.5;
+    return m == Method::semi_implicit_euler ? 1.0 : 0.0;  // x1 = x0 + h v1, or x0 + h v0
 }
 
 double method_stability_limit(Method m) {

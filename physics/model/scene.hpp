@@ -218,6 +218,10 @@ double stability_limit(const IntegratorSettings& integrator);
 // search's round-off) under a constant force, so a located impact state is exact, except
 // explicit Euler's, which gains about g dt of speed on every bounce arc.
 bool keeps_bounce_energy(Method m);
+// Whether a step of the method is exact under a constant force (x1 = x0 + h v0 + a h^2 / 2,
+// v1 = v0 + a h): velocity Verlet, RK4, Dormand-Prince and the exponential step (exactly without
+// drag); not the two Euler methods, which take the step's forces as a kick at one end of it.
+bool exact_under_constant_force(Method m);
 // How far a step of the method moves a particle under a constant extra acceleration a held over
 // the whole step, in units of a h^2: semi-implicit Euler's x1 = x0 + h v1 gives 1, explicit
 // Euler's x1 = x0 + h v0 gives 0, and the others, exact for a constant force (x1 = x0 + h v0 +
