@@ -206,24 +206,31 @@ void ContactSolver::place_bodies(const std::vector<std::uint32_t>& space_order) 
     for (const std::uint32_t i : bodies_) in_body_[i] = 0;
 }
 
-void ContactSolver::load_bodies(const ParticleState& s, const std::vector<std::uint32_t>& space_order) {
+void ContactSolver::load_bodies(const ParticleState& s, const std::vector<std::uint32_t>& space_order,
+                                std::size_t threads) {
+    // Each body and each contact on its own (a particle has one slot): threaded, the same bits.
     place_bodies(space_order);
     if (slot_of_.size() < s.size()) slot_of_.resize(s.size());
     body_.resize(slot_particle_.size());
     v0_.resize(slot_particle_.size());
     w0_.resize(slot_particle_.size());
-    for (std::uint32_t k = 0; k < slot_particle_.size(); ++k) {
-        const std::uint32_t i = slot_particle_[k];
-        slot_of_[i] = k;
-        body_[k] = {s.velocity(i), s.spin(i), s.inertial_mass[i], s.radius[i], inverse_inertia(s, i)};
-        v0_[k] = body_[k].v;
-        w0_[k] = body_[k].w;
-    }
-    for (SolverContact& c : contacts_) {
-        if (!c.active) continue;
-        c.body_a = slot_of_[c.a];
-        c.body_b = c.is_wall() ? 0 : slot_of_[c.b];
-    }
+    for_ranges(slot_particle_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t i = slot_particle_[k];
+            slot_of_[i] = static_cast<std::uint32_t>(k);
+            body_[k] = {s.velocity(i), s.spin(i), s.inertial_mass[i], s.radius[i], inverse_inertia(s, i)};
+            v0_[k] = body_[k].v;
+            w0_[k] = body_[k].w;
+        }
+    });
+    for_ranges(contacts_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+            SolverContact& c = contacts_[k];
+            if (!c.active) continue;
+            c.body_a = slot_of_[c.a];
+            c.body_b = c.is_wall() ? 0 : slot_of_[c.b];
+        }
+    });
 }
 
 void ContactSolver::apply(const SolverContact& c, const Vec3& impulse, bool spin) {
@@ -338,7 +345,7 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
                                    std::size_t threads) {
     if (contacts_.empty()) return 0;
     const bool spin = spin_matters(m);
-    load_bodies(s, space_order);
+    load_bodies(s, space_order, threads);
     warm_start();
     colour_contacts();
     order_by_colour();
@@ -350,12 +357,12 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
     }
     std::uint64_t loaded = 0;
     for (const SolverContact& c : contacts_) loaded += c.lambda_n > 0.0;
-    hand_back(s, m, h, start_velocity, start_spin, spin);
+    hand_back(s, m, h, start_velocity, start_spin, spin, threads);
     return loaded;
 }
 
 void ContactSolver::hand_back(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
-                              const std::vector<Vec3>& start_spin, bool spin) {
+                              const std::vector<Vec3>& start_spin, bool spin, std::size_t threads) {
     // The impulses acted over the whole step: the end positions move by dv times the method's
     // push (scene.hpp, constant_push_share: h for semi-implicit Euler, h / 2 for the methods
     // exact under a constant force, 0 for explicit Euler). Their work, booked from the
@@ -372,21 +379,24 @@ void ContactSolver::hand_back(ParticleState& s, const Model& m, double h, const 
     // Either way a contact at rest (v0 = v1 = 0) does no work: a still pile books nothing.
     const double push = constant_push_share(m.integrator.method) * h;
     const bool exact = exact_under_constant_force(m.integrator.method);
-    for (std::size_t k = 0; k < slot_particle_.size(); ++k) {
-        const std::uint32_t i = slot_particle_[k];
-        s.set_velocity(i, body_[k].v);
-        s.set_spin(i, body_[k].w);
-        const Vec3 dv = s.velocity(i) - v0_[k], dw = s.spin(i) - w0_[k];
-        s.set_position(i, s.position(i) + push * dv);
-        if (s.collision_work.empty()) continue;
-        const double mi = s.inertial_mass[i], moment = s.moment(i);
-        const Vec3 v_from = exact ? v0_[k] : start_velocity[i];
-        double work = mi * glm::dot(dv, 0.5 * (v_from + s.velocity(i)));
-        if (exact) work -= s.mass[i] * glm::dot(m.world.gravity, push * dv);
-        // Without spin dw = 0 and start_spin is not kept (the term is zero).
-        if (spin) work += moment * glm::dot(dw, 0.5 * ((exact ? w0_[k] : start_spin[i]) + s.spin(i)));
-        s.collision_work[i] += work;
-    }
+    // Each body writes only its own particle: threaded, the same bits.
+    for_ranges(slot_particle_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t i = slot_particle_[k];
+            s.set_velocity(i, body_[k].v);
+            s.set_spin(i, body_[k].w);
+            const Vec3 dv = s.velocity(i) - v0_[k], dw = s.spin(i) - w0_[k];
+            s.set_position(i, s.position(i) + push * dv);
+            if (s.collision_work.empty()) continue;
+            const double mi = s.inertial_mass[i], moment = s.moment(i);
+            const Vec3 v_from = exact ? v0_[k] : start_velocity[i];
+            double work = mi * glm::dot(dv, 0.5 * (v_from + s.velocity(i)));
+            if (exact) work -= s.mass[i] * glm::dot(m.world.gravity, push * dv);
+            // Without spin dw = 0 and start_spin is not kept (the term is zero).
+            if (spin) work += moment * glm::dot(dw, 0.5 * ((exact ? w0_[k] : start_spin[i]) + s.spin(i)));
+            s.collision_work[i] += work;
+        }
+    });
 }
 
 }  // namespace pl::collide

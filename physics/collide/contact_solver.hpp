@@ -106,12 +106,12 @@ private:
     void keep_sleeping(const std::vector<std::uint8_t>& asleep);
     void warm_start();
     void place_bodies(const std::vector<std::uint32_t>& space_order);
-    void load_bodies(const ParticleState& s, const std::vector<std::uint32_t>& space_order);
+    void load_bodies(const ParticleState& s, const std::vector<std::uint32_t>& space_order, std::size_t threads);
     void apply(const SolverContact& c, const Vec3& impulse, bool spin);
     void solve_contact(SolverContact& c, bool spin);
     // The solved velocities and spins back into s, the end positions moved, the work booked.
     void hand_back(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
-                   const std::vector<Vec3>& start_spin, bool spin);
+                   const std::vector<Vec3>& start_spin, bool spin, std::size_t threads);
     void colour_contacts();
     void order_by_colour();
     template <class Visit>
