@@ -1,5 +1,5 @@
 // Resting contacts of particles among themselves and with the walls: the slow, lasting contacts
-// of a pile, which impacts (the time-of-impact passes of collision_pass.hpp) cannot hold still.
+// of a pile, which impacts (resolved in time order by collision_pass.hpp) cannot hold still.
 //
 // Sequential impulses with accumulated, clamped impulses and warm starting (Catto, "Iterative
 // Dynamics with Temporal Coherence", GDC 2005; "Fast and Simple Physics using Sequential
