@@ -177,8 +177,7 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
                 for (std::uint64_t dy = 0; dy <= 1; ++dy)
                     for (std::uint64_t dx = 0; dx <= 1; ++dx) {
                         const auto cell = static_cast<std::uint32_t>(linear(lo[0] + dx, lo[1] + dy, lo[2] + dz));
-                        out[kept] = {cell, slot | (dx == 0 ? first_x_bit : 0u) | (dy == 0 ? first_y_bit : 0u) |
-                                               (dz == 0 ? first_z_bit : 0u)};
+                        out[kept] = {cell, with_firsts(slot, dx == 0, dy == 0, dz == 0)};
                         const std::uint32_t in =
                             std::uint32_t(lo[0] + dx <= hi[0]) & std::uint32_t(lo[1] + dy <= hi[1]) & std::uint32_t(lo[2] + dz <= hi[2]);
                         count[cell & digit_mask] += in;
@@ -193,8 +192,7 @@ void BroadPhase::enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep
                     Entry& e = *out++;
                     e.cell = static_cast<std::uint32_t>(linear(x, y, z));
                     ++count[e.cell & digit_mask];
-                    e.slot = slot | (x == lo[0] ? first_x_bit : 0u) | (y == lo[1] ? first_y_bit : 0u) |
-                             (z == lo[2] ? first_z_bit : 0u);
+                    e.slot = with_firsts(slot, x == lo[0], y == lo[1], z == lo[2]);
                 }
         part.fill += static_cast<std::size_t>(spanned);
     }
@@ -254,70 +252,6 @@ void BroadPhase::radix_sort(std::size_t tasks) {
         radix_pass(sources_, out, pass * digit_, mask, pass == 0);
         for (std::size_t t = 0; t < tasks; ++t) sources_[t] = {out + total * t / tasks, out + total * (t + 1) / tasks};
     }
-}
-
-std::size_t BroadPhase::scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs,
-                                   std::vector<std::uint32_t>& homes) const {
-    // Two entries of a cell pair when one of them is awake, their boxes overlap and this cell
-    // holds the low corner of the boxes' intersection (the one cell of the several they may share
-    // that reports them). A cell of sleeping entries only is passed over. The particles whose home
-    // this cell is are appended to `homes` (the next call's order). Returns the number of cells.
-    const std::size_t first_pair = pairs.size();
-    // A box has one home among its entries: each entry's id is written, and the write position
-    // moves on only for a home (no branch: which entries are homes is as good as random).
-    const std::size_t home_base = homes.size();
-    homes.resize(home_base + (end - begin));
-    std::uint32_t* home = homes.data() + home_base;
-    std::size_t cells = 0;
-    for (std::size_t run = begin; run < end; ++cells) {
-        const std::uint32_t cell = entries_[run].cell;
-        std::size_t run_end = run;
-        std::uint32_t awake = 0;
-        for (; run_end < end && entries_[run_end].cell == cell; ++run_end) {
-            const std::uint32_t slot = entries_[run_end].slot;
-            awake |= slot & awake_bit;
-            *home = slot_id_[slot & slot_mask];
-            home += (slot & home_bits) == home_bits;
-        }
-        for (std::size_t p = run; awake && p + 1 < run_end; ++p) {
-            const std::uint32_t sp = entries_[p].slot;
-            const FloatBox& bp = slot_box_[sp & slot_mask];
-            for (std::size_t q = p + 1; q < run_end; ++q) {
-                const std::uint32_t sq = entries_[q].slot;
-                const FloatBox& bq = slot_box_[sq & slot_mask];
-                // The cell reports the pair when, along each axis, one of the two boxes starts
-                // in it: it is then the low corner of the cells they share, met once per pair.
-                // One branch for all of it.
-                const std::uint32_t both = sp | sq;
-                const int skip = int((both & (awake_bit | home_bits)) != (awake_bit | home_bits)) |  // or both asleep
-                                 apart(bp, bq);
-                if (skip) continue;  // apart even in the rounded-out boxes
-                const std::uint32_t i = slot_id_[sp & slot_mask], j = slot_id_[sq & slot_mask];
-                pairs.push_back({std::min(i, j), std::max(i, j)});
-            }
-        }
-        run = run_end;
-    }
-    homes.resize(static_cast<std::size_t>(home - homes.data()));
-    if (exact_) keep_exact(pairs, first_pair);
-    return cells;
-}
-
-void BroadPhase::keep_exact(std::vector<Pair>& pairs, std::size_t from) const {
-    // The exact boxes of the pairs from `from` on, fetched ahead: they are out of memory order
-    // (a pile's neighbours have random indices), and tested one by one as the cells were
-    // scanned, each pair's two boxes came from main memory in turn.
-    const SweptBox* box = boxes_->box.data();
-    constexpr std::size_t ahead = 8;
-    std::size_t kept = from;
-    for (std::size_t k = from; k < pairs.size(); ++k) {
-        if (k + ahead < pairs.size()) {
-            __builtin_prefetch(&box[pairs[k + ahead].a]);
-            __builtin_prefetch(&box[pairs[k + ahead].b]);
-        }
-        if (overlap(box[pairs[k].a], box[pairs[k].b])) pairs[kept++] = pairs[k];
-    }
-    pairs.resize(kept);
 }
 
 void BroadPhase::pair_big_ones(const SweptBoxes& boxes, const std::uint8_t* asleep, std::vector<Pair>& pairs) const {

@@ -129,6 +129,10 @@ private:
         std::uint32_t cell;  // linear cell index
         std::uint32_t slot;  // the box's slot, with awake_bit and the first_*_bits
     };
+    // A box's slot with the bits of the axes along which the box starts in the entry's cell.
+    static std::uint32_t with_firsts(std::uint32_t slot, bool first_x, bool first_y, bool first_z) {
+        return slot | (first_x ? first_x_bit : 0u) | (first_y ? first_y_bit : 0u) | (first_z ? first_z_bit : 0u);
+    }
     // A box rounded out to floats, in its slot: the scan reads a cell's boxes from the slots of
     // nearby home cells (the slots follow the last call's order of space), which the caches hold.
     struct FloatBox {

@@ -131,6 +131,7 @@ double CollisionPass::strike(ParticleState& s, std::uint32_t i, double t, const 
     // (an impact's work is booked where it is struck: the solver's would count its dv twice).
     start_velocity_[i] += dv;
     if (spin) start_spin_[i] += dw;
+    ++strikes_[i];
     touch(i);
     return motion_energy(s, i) - e0;
 }
@@ -225,11 +226,6 @@ void CollisionPass::keep_rest_on_walls(ParticleState& s, double impact) {
     }
 }
 
-void CollisionPass::find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads) {
-    hits_.clear();
-    append_hits(s, h, spin, impact, threads);
-}
-
 void CollisionPass::append_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads) {
     // Each queued pair's first contact along the current paths, appended to hits_; threaded in
     // slices of the queue, joined in order (the same hits on any number of threads).
@@ -315,8 +311,8 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
     const bool spin = spin_matters(m);
     queue_.resize(pairs_.size());
     for (std::uint32_t k = 0; k < pairs_.size(); ++k) queue_[k] = k;  // first: every pair
-    resolved_.clear();
-    find_hits(s, h, spin, impact, threads);
+    hits_.clear();
+    append_hits(s, h, spin, impact, threads);
     if (hits_.empty()) return 0;
     index_pairs();
     std::make_heap(hits_.begin(), hits_.end(), later);
@@ -334,9 +330,8 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
             resolved_.push_back(c.b);
             ++impulses;
         }
-        for (const std::uint32_t i : resolved_) ++strikes_[i];
         // The struck particles' paths bent at c.t: their pairs' first contacts from then on, and
-        // the wall each lies against.
+        // the wall each now runs into.
         queue_pairs_of(resolved_, event++);
         const std::size_t from = hits_.size();
         append_hits(s, h, spin, impact, threads);

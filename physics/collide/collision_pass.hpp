@@ -113,7 +113,6 @@ private:
     Vec3 at(std::uint32_t i, double t) const { return path_start_[i] + (t - path_time_[i]) * path_rate_[i]; }
     bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const;
     void hold_sleepers(ParticleState& s);
-    void find_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
     void append_hits(const ParticleState& s, double h, bool spin, double impact, std::size_t threads);
     std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, double impact, std::size_t threads);
     void list_pair_particles();
@@ -121,7 +120,8 @@ private:
     void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t event);
     void queue_hits(std::size_t from);
     // Particle i takes dv (and dw) at time t of the step: its path bends there, and the solver's
-    // start velocity (and spin) takes the change too. Returns the change of its energy of motion.
+    // start velocity (and spin) takes the change too, and its strike count one more. Returns the
+    // change of its energy of motion.
     double strike(ParticleState& s, std::uint32_t i, double t, const Vec3& dv, const Vec3& dw, bool spin);
     void resolve(ParticleState& s, const Model& m, const Hit& hit, bool spin);
     // The walls among the impacts (wall_hits.cpp): the wall each particle just struck lies

@@ -1,14 +1,14 @@
 // The walls among the impacts (collision_pass.hpp). The kernel meets the walls on its own path,
 // once a step; an impact bends a particle's path after that. A light ball pressed on the floor by
-// a heavy one bounces between the two many times in an instant: met only by the kernel, it took
-// one floor bounce and one blow a step, and a column of unlike masses sank into its bottom ball,
-// the balls passing through each other. And a ball struck toward a near wall was held against it
-// at the step's end, still moving into it, and bounced a step late. So a particle the pass
+// a heavy one bounces between the two many times in an instant: met only by the kernel, it takes
+// one floor bounce and one blow a step, and a column of unlike masses sinks into its bottom ball,
+// the balls passing through each other; a ball struck toward a near wall would be held against
+// it at the step's end, still moving into it, and bounce a step late. So a particle the pass
 // strikes whose new path reaches a wall before the step ends (or touches it already), moving
-// into it faster than an impact, takes that wall hit in the queue, among the pairs' hits in time order, with the
-// walls' restitution law and friction (the kernel's impact: Newton's law on the normal speed,
-// Coulomb friction that at most stops the slip, the spin's share where contact.spin couples it)
-// and the walls' ledger lines (bounce and friction losses).
+// into it faster than an impact, takes that wall hit in the queue, among the pairs' hits in time
+// order, with the walls' restitution law and friction (the kernel's impact: Newton's law on the
+// normal speed, Coulomb friction that at most stops the slip, the spin's share where
+// contact.spin couples it) and the walls' ledger lines (bounce and friction losses).
 #include "physics/collide/collision_pass.hpp"
 
 #include "physics/collide/narrow_phase.hpp"
