@@ -171,16 +171,22 @@ void ContactSolver::keep_sleeping(const std::vector<std::uint8_t>& asleep) {
     contacts_.swap(merged_);
 }
 
-void ContactSolver::warm_start() {
-    // Both lists are in (a, b, wall) order: one merge walk finds the contacts that persist.
-    auto prev = previous_.begin();
-    for (SolverContact& c : contacts_) {
-        while (prev != previous_.end() && before(*prev, c)) ++prev;
-        if (prev == previous_.end()) break;
-        if (before(c, *prev)) continue;
-        c.lambda_n = prev->lambda_n;
-        c.lambda_t = prev->lambda_t - glm::dot(prev->lambda_t, c.n) * c.n;  // onto today's tangent plane
-    }
+void ContactSolver::warm_start(std::size_t threads) {
+    // Both lists are in (a, b, wall) order: a merge walk finds the contacts that persist, in
+    // ranges of today's contacts on the threads, each from its first contact's place in the last
+    // step's list (each range writes only its own contacts: the same bits).
+    for_ranges(contacts_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+        if (begin == end) return;
+        auto prev = std::lower_bound(previous_.begin(), previous_.end(), contacts_[begin], before);
+        for (std::size_t k = begin; k < end; ++k) {
+            SolverContact& c = contacts_[k];
+            while (prev != previous_.end() && before(*prev, c)) ++prev;
+            if (prev == previous_.end()) break;
+            if (before(c, *prev)) continue;
+            c.lambda_n = prev->lambda_n;
+            c.lambda_t = prev->lambda_t - glm::dot(prev->lambda_t, c.n) * c.n;  // onto today's tangent plane
+        }
+    });
 }
 
 void ContactSolver::place_bodies(const std::vector<std::uint32_t>& space_order) {
@@ -295,7 +301,7 @@ void ContactSolver::colour_contacts() {
     for (std::size_t c = 1; c < colour_start_.size(); ++c) colour_start_[c] += colour_start_[c - 1];
 }
 
-void ContactSolver::order_by_colour() {
+void ContactSolver::order_by_colour(std::size_t threads) {
     // Each colour's contacts in the slot order of their first body (a counting sort by slot, then
     // a stable one by colour): a colour's contacts share no body, so their order changes no bit
     // of the result. The shared colour's do share bodies: they keep the contact order.
@@ -317,7 +323,9 @@ void ContactSolver::order_by_colour() {
     // through memory per colour, where the contacts in (a, b) order were a strided sweep of all
     // of them per colour (a pile of 1e5 holds 30 MB of contacts: every colour missed the caches).
     coloured_.resize(by_colour_.size());
-    for (std::size_t k = 0; k < by_colour_.size(); ++k) coloured_[k] = contacts_[by_colour_[k]];
+    for_ranges(by_colour_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) coloured_[k] = contacts_[by_colour_[k]];
+    });
 }
 
 template <class Visit>
@@ -346,17 +354,27 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
     if (contacts_.empty()) return 0;
     const bool spin = spin_matters(m);
     load_bodies(s, space_order, threads);
-    warm_start();
+    warm_start(threads);
     colour_contacts();
-    order_by_colour();
+    order_by_colour(threads);
     for_each_coloured(threads, [&](const SolverContact& c) { apply(c, c.lambda_n * c.n + c.lambda_t, spin); });
     for (int it = 0; it < iterations; ++it) for_each_coloured(threads, [&](SolverContact& c) { solve_contact(c, spin); });
-    for (std::size_t k = 0; k < by_colour_.size(); ++k) {  // the impulses back, for the next warm start
-        contacts_[by_colour_[k]].lambda_n = coloured_[k].lambda_n;
-        contacts_[by_colour_[k]].lambda_t = coloured_[k].lambda_t;
-    }
+    // The impulses back, for the next warm start (each contact once: threaded, the same bits),
+    // and the loaded contacts counted (the sleeping ones keep theirs).
+    task_loaded_.assign(range_tasks(contacts_.size(), threads), 0);
+    for_ranges(by_colour_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+            contacts_[by_colour_[k]].lambda_n = coloured_[k].lambda_n;
+            contacts_[by_colour_[k]].lambda_t = coloured_[k].lambda_t;
+        }
+    });
+    for_ranges(contacts_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
+        std::uint64_t count = 0;
+        for (std::size_t k = begin; k < end; ++k) count += contacts_[k].lambda_n > 0.0;
+        task_loaded_[task] = count;
+    });
     std::uint64_t loaded = 0;
-    for (const SolverContact& c : contacts_) loaded += c.lambda_n > 0.0;
+    for (const std::uint64_t count : task_loaded_) loaded += count;
     hand_back(s, m, h, start_velocity, start_spin, spin, threads);
     return loaded;
 }

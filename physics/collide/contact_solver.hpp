@@ -104,7 +104,7 @@ private:
                               std::vector<SolverContact>& out);
     void sort_bodies(std::size_t particles);  // bodies_ in index order, in_body_ cleared
     void keep_sleeping(const std::vector<std::uint8_t>& asleep);
-    void warm_start();
+    void warm_start(std::size_t threads);
     void place_bodies(const std::vector<std::uint32_t>& space_order);
     void load_bodies(const ParticleState& s, const std::vector<std::uint32_t>& space_order, std::size_t threads);
     void apply(const SolverContact& c, const Vec3& impulse, bool spin);
@@ -113,7 +113,7 @@ private:
     void hand_back(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
                    const std::vector<Vec3>& start_spin, bool spin, std::size_t threads);
     void colour_contacts();
-    void order_by_colour();
+    void order_by_colour(std::size_t threads);
     template <class Visit>
     void for_each_coloured(std::size_t threads, Visit&& visit);
 
@@ -133,6 +133,7 @@ private:
     std::vector<std::uint8_t> colour_of_;
     std::vector<std::uint32_t> colour_start_, by_colour_, next_in_colour_, slot_start_, by_slot_;
     std::vector<SolverContact> coloured_;  // the active contacts in by_colour_ order, while solving
+    std::vector<std::uint64_t> task_loaded_;  // loaded contacts, per task of the count
     static constexpr std::uint32_t parallel_colour = 512;  // smaller colours run on one thread
     static constexpr std::size_t few_bodies_share = 4;     // bodies under 1/4 of the particles: index order
 };
