@@ -374,7 +374,13 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     remove_overlaps(s, m);
     const RoomBounds room(m.room);
     for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
-    for (const std::uint32_t i : pair_particles_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+    // Each paired particle once (pair_particles_ lists each once): threaded, the same bits.
+    for_ranges(pair_particles_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t i = pair_particles_[k];
+            move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+        }
+    });
     // The one place islands wake in a step: every particle struck by an impact or in an active
     // contact (a sleeping one touched by an awake one) is in moved_.
     for (const std::uint32_t i : moved_)
