@@ -171,5 +171,66 @@ TEST(AdvisorCollisions, FiveHundredBallsOnAQuarterSquareMetreMustStack) {
     EXPECT_GT(run.metric(AdviceMetric::landing_point).difference, 1e-3) << verdict;
 }
 
+// A term's differences in a chaotic scene: the pour's balls meet in the air and on the floor, so
+// moving every start by half a millimetre changes where they land by centimetres. Buoyancy (air
+// over particles of 0.1% of their density) then changes them as much: the advice says they are
+// within the scene's chaos and warns, and a scene whose balls never meet measures no chaos.
+TEST(AdvisorCollisions, DifferencesNoLargerThanAMovedStartGivesAreMarkedAsTheScenesChaos) {
+    Scene scene;
+    scene.room.center = {0, 1, 0};
+    scene.room.size = {0.5, 2, 0.5};
+    scene.collisions.enabled = true;
+    Emitter pour;
+    pour.count = 200;
+    pour.region_min = {-0.2, 0.1, -0.2};
+    pour.region_max = {0.2, 1.9, 0.2};
+    pour.speed_min = pour.speed_max = 0.0;
+    pour.radius_min = pour.radius_max = 0.02;
+    scene.emitter = pour;
+    AdviceOptions o;
+    o.max_duration_s = 3.0;
+    const VariantAdvice v = advise(scene, o).variants[0];
+    ASSERT_TRUE(v.chaos_measured);
+    ASSERT_TRUE(v.chaos.matters) << joined(v.warnings);
+    EXPECT_GT(v.chaos.metric(AdviceMetric::landing_point).difference, 1e-2) << "centimetres from half a millimetre";
+    EXPECT_TRUE(v.warnings.front().starts_with("the trajectories are chaotic: moving every start by half the length tolerance "
+                                               "(0.5 mm) changes "))
+        << joined(v.warnings);
+    // The rule, metric by metric: marked exactly when beyond tolerance and within twice the nudge's.
+    std::size_t marked = 0;
+    for (const ModelRun& r : v.runs)
+        for (AdviceMetric m : advice_metrics) {
+            const MetricDelta& d = r.metric(m);
+            const MetricDelta& c = v.chaos.metric(m);
+            const bool within = d.beyond_tolerance && c.beyond_tolerance &&
+                                std::abs(d.difference) <= chaos_factor * std::abs(c.difference);
+            EXPECT_EQ(d.within_chaos, within) << r.term << ", " << to_string(m);
+            marked += d.within_chaos;
+        }
+    EXPECT_GT(marked, 0u);
+    const auto buoyancy = std::find_if(v.runs.begin(), v.runs.end(), [](const ModelRun& r) { return r.term == "buoyancy"; });
+    ASSERT_NE(buoyancy, v.runs.end());
+    if (buoyancy->within_chaos) {
+        const std::string& verdict = verdict_starting(v, "buoyancy is off but would change ");
+        EXPECT_NE(verdict.find("all within the scene's chaos (moving every start by half the length tolerance gives "),
+                  std::string::npos)
+            << verdict;
+    }
+
+    // Five balls 2 m apart dropped straight down never meet: the moved starts change nothing
+    // beyond tolerance (each lands half a millimetre from where it did), and nothing is marked.
+    Scene apart;
+    apart.room = big_room().room;
+    apart.collisions.enabled = true;
+    for (int k = 0; k < 5; ++k) apart.particles.push_back({{-4.0 + 2.0 * k, 1.0, 0}, {0, 0, 0}, 0.03, 0.01});
+    const VariantAdvice calm = advise(apart, {}).variants[0];
+    ASSERT_TRUE(calm.chaos_measured);
+    EXPECT_FALSE(calm.chaos.matters);
+    EXPECT_NEAR(calm.chaos.metric(AdviceMetric::landing_point).difference, 0.5e-3, 1e-12);
+    for (const ModelRun& r : calm.runs) EXPECT_FALSE(r.within_chaos) << r.term;
+    apart.collisions.enabled = false;
+    EXPECT_FALSE(advise(apart, {}).variants[0].chaos_measured) << "no collisions: no chaos run";
+}
+
 }  // namespace
 }  // namespace pl

@@ -73,10 +73,14 @@ void variant_advice(const VariantAdvice& a) {
             const MetricDelta& d = r.metric(m);
             if (!r.not_applicable.empty()) ImGui::TextDisabled("n/a");
             else if (!d.measured) ImGui::TextDisabled("-");
+            else if (d.beyond_tolerance && d.within_chaos)  // beyond tolerance, but so is a nudge of the starts
+                ImGui::TextColored({0.75f, 0.65f, 0.5f, 1.0f}, "%s%+.3g~", d.at_least ? ">|" : "", d.difference);
             else if (d.beyond_tolerance)
                 ImGui::TextColored({1.0f, 0.75f, 0.3f, 1.0f}, "%s%+.3g", d.at_least ? ">|" : "", d.difference);
             else ImGui::Text("%s%+.3g", d.at_least ? ">|" : "", d.difference);
-            if (ImGui::IsItemHovered() && d.measured) ImGui::SetTooltip("%s", describe(m, d).c_str());
+            if (ImGui::IsItemHovered() && d.measured)
+                ImGui::SetTooltip("%s%s", describe(m, d).c_str(),
+                                  d.within_chaos ? "\nwithin the scene's chaos: moving the starts changes it as much (see the warning)" : "");
         }
     }
     ImGui::EndTable();

@@ -1,6 +1,7 @@
 #include "physics/studies/advisor.hpp"
 
 #include "physics/model/air_model.hpp"
+#include "physics/stepping/contact.hpp"
 
 #include "physics/studies/advisor_runs.hpp"
 #include "physics/studies/advisor_terms.hpp"
@@ -126,6 +127,53 @@ AdviceMetric largest(const ModelRun& r, const AdviceTolerances& tol) {
     return best;
 }
 
+// The metric beyond tolerance furthest past the nudge's difference (all are within the chaos).
+AdviceMetric most_chaotic(const ModelRun& r, const ModelRun& chaos) {
+    AdviceMetric best = AdviceMetric::landing_point;
+    double best_ratio = -1.0;
+    for (AdviceMetric m : advice_metrics)
+        if (r.metric(m).within_chaos) {
+            const double ratio = std::abs(r.metric(m).difference) / std::abs(chaos.metric(m).difference);
+            if (ratio > best_ratio) best = m, best_ratio = ratio;
+        }
+    return best;
+}
+
+// Marks a row's metrics beyond tolerance that moving the starts (by half the length tolerance) changes
+// as much (up to chaos_factor times); the row is within the chaos when all of them are.
+void mark_chaos(const ModelRun& chaos, ModelRun& r) {
+    bool all = r.matters;
+    for (std::size_t k = 0; k < advice_metric_count; ++k) {
+        MetricDelta& d = r.metrics[k];
+        const MetricDelta& c = chaos.metrics[k];
+        if (!d.beyond_tolerance) continue;
+        d.within_chaos = c.beyond_tolerance && std::abs(d.difference) <= chaos_factor * std::abs(c.difference);
+        all = all && d.within_chaos;
+    }
+    r.within_chaos = all;
+}
+
+// For a row whose differences beyond tolerance are all within the scene's chaos.
+std::string chaos_words(const ModelRun& r, const ModelRun& chaos) {
+    const AdviceMetric m = most_chaotic(r, chaos);
+    return fmt::format("all within the scene's chaos (moving every start by half the length tolerance gives {}): particle by "
+                       "particle, the term's own effect cannot be told from it",
+                       describe(m, chaos.metric(m)));
+}
+
+// The starts moved `distance` horizontally, diagonally in x and z, in a pattern that differs
+// between neighbours in the list (a rigid shift of every start would keep the particles'
+// relative positions), kept inside the room.
+std::vector<ParticleSpec> nudged(const Model& model, std::vector<ParticleSpec> particles, double distance) {
+    const RoomBounds room(model.room);
+    const double d = distance / std::numbers::sqrt2;
+    for (std::size_t k = 0; k < particles.size(); ++k) {
+        const Vec3 step(k % 2 ? d : -d, 0.0, (k / 2) % 2 ? d : -d);
+        particles[k].position = room.clamp_inside(particles[k].position + step, particles[k].radius);
+    }
+    return particles;
+}
+
 std::string beyond_list(const ModelRun& r) {
     std::string s;
     for (AdviceMetric m : advice_metrics)
@@ -133,31 +181,33 @@ std::string beyond_list(const ModelRun& r) {
     return s;
 }
 
-std::string verdict(const TermRow& row, const ModelRun& r, const std::string& note, const AdviceTolerances& tol) {
+std::string verdict(const TermRow& row, const ModelRun& r, const ModelRun& chaos, const std::string& note,
+                    const AdviceTolerances& tol) {
     if (!r.not_applicable.empty()) return fmt::format("{}: {}", row.name, r.not_applicable);
     const std::string extra = note.empty() ? "" : "; " + note;
     const std::string most = fmt::format("(largest: {})", describe(largest(r, tol), r.metric(largest(r, tol))));
+    const std::string chaotic = r.within_chaos ? "; " + chaos_words(r, chaos) : std::string();
     if (row.kind == TermKind::alternative)
-        return r.matters ? fmt::format("{} differs from {} drag: {}{}: not enough here", row.name, to_string(reference_drag),
-                                       beyond_list(r), extra)
+        return r.matters ? fmt::format("{} differs from {} drag: {}{}{}: not enough here", row.name, to_string(reference_drag),
+                                       beyond_list(r), chaotic, extra)
                          : fmt::format("{} is within tolerance of {} drag {}{}: enough here", row.name,
                                        to_string(reference_drag), most, extra);
     if (r.in_scene)
-        return r.matters ? fmt::format("{} matters: {}{}", row.name, beyond_list(r), extra)
+        return r.matters ? fmt::format("{} matters: {}{}{}", row.name, beyond_list(r), chaotic, extra)
                          : fmt::format("{} changes nothing beyond tolerance {}{}: it could be turned off", row.name, most, extra);
-    return r.matters ? fmt::format("{} is off but would change {}{}: turn it on", row.name, beyond_list(r), extra)
+    return r.matters ? fmt::format("{} is off but would change {}{}{}: turn it on", row.name, beyond_list(r), chaotic, extra)
                      : fmt::format("{} is off and would change nothing beyond tolerance {}{}", row.name, most, extra);
 }
 
 // What the runs measured, in words: the metrics beyond tolerance, or the largest within.
-std::string measured_words(const ModelRun& r, const AdviceTolerances& tol) {
-    if (r.matters) return beyond_list(r);
+std::string measured_words(const ModelRun& r, const ModelRun& chaos, const AdviceTolerances& tol) {
+    if (r.matters) return beyond_list(r) + (r.within_chaos ? "; " + chaos_words(r, chaos) : std::string());
     return fmt::format("nothing beyond tolerance (largest: {})", describe(largest(r, tol), r.metric(largest(r, tol))));
 }
 
 std::string row_verdict(const TermRow& row, const TermContext& c, const AdviceTolerances& tol) {
     if (row.own_verdict && c.run.not_applicable.empty()) return row.own_verdict(c);
-    return verdict(row, c.run, row.note ? row.note(c) : std::string(), tol);
+    return verdict(row, c.run, c.advice.chaos, row.note ? row.note(c) : std::string(), tol);
 }
 
 std::size_t row_index(const char* name) {
@@ -221,6 +271,20 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
         }
     for (const auto& [key, r] : runs) a.simulated_s = std::max(a.simulated_s, r.end_time);
     a.distinct_runs = runs.size();
+    if (model.collisions.enabled && particles.size() >= 2) {
+        const RunOutcome again = observe_run(model, nudged(model, particles, chaos_nudge * tol.metres), o.max_duration_s, false, o.cancel);
+        a.chaos.term = "nudged starts";
+        a.chaos.in_scene = true;
+        compare_runs(again, runs.at(nullptr), tol, a.chaos);
+        a.chaos_measured = true;
+        a.simulated_s = std::max(a.simulated_s, again.end_time);
+        ++a.distinct_runs;
+        if (a.chaos.matters)
+            a.warnings.push_back(fmt::format("the trajectories are chaotic: moving every start by half the length tolerance ({}) "
+                                             "changes {}; particle by particle, differences up to {:g}x these may be the "
+                                             "scene's chaos rather than a term's own effect",
+                                             quantity(chaos_nudge * tol.metres, "m", false), beyond_list(a.chaos), chaos_factor));
+    }
 
     const RunOutcome& ref = runs.at(reference);
     a.re_min = std::isfinite(ref.re_min) ? ref.re_min : 0.0;
@@ -248,12 +312,13 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
         if (const char* why = row.not_applicable ? row.not_applicable(model, particles.size()) : nullptr)
             r.not_applicable = why;
         else compare_runs(runs.at(keys[k].first), runs.at(keys[k].second), tol, r);
+        if (a.chaos.matters) mark_chaos(a.chaos, r);
         a.runs.push_back(r);
     }
     const std::size_t collisions_row = row_index(collisions_term);
     a.collisions_recommended = recommend_collisions(a.collisions, a.runs[collisions_row].matters);
     for (std::size_t k = 0; k < table.size(); ++k)
-        if (table[k].verdict) a.verdicts.push_back(row_verdict(table[k], {model, a, a.runs[k], measured_words(a.runs[k], tol)}, tol));
+        if (table[k].verdict) a.verdicts.push_back(row_verdict(table[k], {model, a, a.runs[k], measured_words(a.runs[k], a.chaos, tol)}, tol));
 
     // The cheapest drag model whose run stays within tolerance of the reference on every metric.
     for (const ModelRun& r : a.runs)

@@ -33,6 +33,11 @@ inline constexpr std::size_t advice_metric_count = 6;
 inline constexpr std::array<AdviceMetric, advice_metric_count> advice_metrics = {
     AdviceMetric::landing_time, AdviceMetric::impact_speed, AdviceMetric::time_to_rest,
     AdviceMetric::range,        AdviceMetric::apex_height,  AdviceMetric::landing_point};
+// VariantAdvice::chaos: the starts are moved by chaos_nudge times the length tolerance (half: a
+// particle that meets none lands that much further, within tolerance), and a difference up to
+// chaos_factor times the nudge's is as likely chaos as a term's effect.
+inline constexpr double chaos_nudge = 0.5;
+inline constexpr double chaos_factor = 2.0;
 inline constexpr int advice_impacts = 3;  // impact speeds compared: the first three floor impacts
 const char* to_string(AdviceMetric m);    // "landing time"
 const char* json_key(AdviceMetric m);     // "landing_time_s"
@@ -73,6 +78,9 @@ struct MetricDelta {
     double value = 0.0, baseline = 0.0;
     bool at_least = false;     // reached in one run only: the other's value is taken at the run's end, a bound
     bool beyond_tolerance = false;  // this particle or any other
+    // Beyond tolerance, but not more than chaos_factor times what moving the starts changes
+    // (VariantAdvice::chaos): as likely the scene's chaos as the term's own effect.
+    bool within_chaos = false;
     std::size_t particle = 0;
     int impact = 0;            // impact_speed: which floor impact (1 = the first)
     std::optional<double> relative() const;  // difference / baseline (none for the landing point or b = 0)
@@ -92,6 +100,7 @@ struct ModelRun {
     bool buoyancy = false;
     std::array<MetricDelta, advice_metric_count> metrics{};
     bool matters = false;  // some metric beyond tolerance
+    bool within_chaos = false;  // every metric beyond tolerance is within the scene's chaos (MetricDelta::within_chaos)
     // Max over particles of |landing point difference| and |apex difference|, m (summary numbers
     // beside the metrics: the JSON's landing_difference_m and apex_difference_m).
     double landing_difference_m = 0.0;
@@ -115,6 +124,17 @@ struct VariantAdvice {
     // advice's first 100), over the collisions-off run's duration; and the recommendation.
     CollisionEstimate collisions;
     bool collisions_recommended = false;
+    // With collisions on, trajectories can be chaotic: particles that meet amplify any difference
+    // (a positive Lyapunov exponent), so a term that moves the particles by about the length
+    // tolerance before they meet can change where each one ends by much more, as any change of
+    // that size would. The scene is run again with every start moved by half the length
+    // tolerance and compared with its own run (chaos: term "nudged starts"). Where that nudge moves a
+    // metric beyond tolerance, a row's difference in it up to chaos_factor times the nudge's is
+    // marked (MetricDelta::within_chaos), its verdict says so, and the variant warns: compared
+    // particle by particle, such a difference does not show the term's own effect. It still
+    // counts toward `matters` (the term did change those trajectories that much).
+    bool chaos_measured = false;
+    ModelRun chaos;
     // max over the trajectory of (sphere_re drag) / (Stokes drag) = Cd(Re) Re / 24
     double stokes_error_factor = 1.0;
     DragModel cheapest_adequate = DragModel::sphere_re;  // cheapest within tolerance of sphere_re

@@ -56,6 +56,7 @@ Json metrics_json(const ModelRun& r) {
         x["relative"] = optional_number(rel.has_value(), rel.value_or(0.0));
         x["beyond_tolerance"] = d.beyond_tolerance;
         x["at_least"] = d.at_least;
+        x["within_chaos"] = d.within_chaos;
         x["particle"] = d.measured ? Json(d.particle) : Json(nullptr);
         x["impact"] = m == AdviceMetric::impact_speed && d.measured ? Json(d.impact) : Json(nullptr);
         metrics[json_key(m)] = x;
@@ -75,6 +76,7 @@ Json run_json(const ModelRun& r) {
     jr["buoyancy"] = r.buoyancy;
     jr["not_applicable"] = r.not_applicable.empty() ? Json(nullptr) : Json(r.not_applicable);
     jr["matters"] = r.matters;
+    jr["within_chaos"] = r.within_chaos;
     jr["metrics"] = metrics_json(r);
     return jr;
 }
@@ -137,6 +139,9 @@ Json advice_json(const Scene& scene, const Advice& a) {
         x["simulated_s"] = va.simulated_s;
         x["density_ratio"] = va.density_ratio;
         x["collisions"] = collisions_json(va);
+        // With collisions on: the scene run again from moved starts (the same keys without, for --csv).
+        x["chaos_measured"] = va.chaos_measured;
+        x["chaos"] = run_json(va.chaos);
         Json runs = Json::array();
         for (const ModelRun& r : va.runs) runs.push_back(run_json(r));
         x["runs"] = runs;
@@ -152,7 +157,7 @@ Json advice_json(const Scene& scene, const Advice& a) {
 std::string cell(const MetricDelta& d) {
     if (!d.measured) return "-";
     return std::string(d.at_least ? (d.difference < 0 ? "<=" : ">=") : "") + sig(d.difference, 3) +
-           (d.beyond_tolerance ? "*" : "");
+           (d.beyond_tolerance ? "*" : "") + (d.within_chaos ? "~" : "");
 }
 
 // One line: the estimate's numbers, over all the scene's particles.
@@ -212,7 +217,8 @@ int advise_command(const AdviseCliOptions& o) {
     const AdviceTolerances& tol = a.tolerances;
     std::printf("%s: which terms matter, from running each term on and off (and each drag model against sphere_re)\n"
                 "tolerances: %s mm, %s ms, %s mm/s%s; runs end when all particles rest, or at %s s\n"
-                "table: the term's effect, on - off (drag models: model - sphere_re); * beyond tolerance\n",
+                "table: the term's effect, on - off (drag models: model - sphere_re); * beyond tolerance, "
+                "~ within the scene's chaos (see the warning)\n",
                 scene->name.c_str(), sig(tol.metres * 1e3, 3).c_str(), sig(tol.seconds * 1e3, 3).c_str(),
                 sig(tol.metres_per_second * 1e3, 3).c_str(),
                 tol.relative > 0.0 ? fmt::format(" or {}% of the value", sig(tol.relative * 100.0, 3)).c_str() : "",
