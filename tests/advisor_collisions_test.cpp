@@ -141,17 +141,23 @@ TEST(AdvisorCollisions, TwoBallsThrownAtEachOtherMeetThoughTheEstimateSaysRarely
     EXPECT_TRUE(verdict.ends_with("turn them on")) << verdict;
 }
 
-TEST(AdvisorCollisions, FiveHundredBallsOnAQuarterSquareMetreMustStack) {
+// `count` balls of 2 cm dropped from rest over a quarter square metre of floor, 2 m high.
+Scene pour_of(std::size_t count) {
     Scene scene;
     scene.room.center = {0, 1, 0};
     scene.room.size = {0.5, 2, 0.5};
     Emitter pour;
-    pour.count = 500;
+    pour.count = count;
     pour.region_min = {-0.2, 0.1, -0.2};
     pour.region_max = {0.2, 1.9, 0.2};
     pour.speed_min = pour.speed_max = 0.0;
     pour.radius_min = pour.radius_max = 0.02;
     scene.emitter = pour;
+    return scene;
+}
+
+TEST(AdvisorCollisions, FiveHundredBallsOnAQuarterSquareMetreMustStack) {
+    const Scene scene = pour_of(500);
     AdviceOptions o;
     o.max_duration_s = 3.0;  // the falls and the first bounces: enough to see the pile differ
     const Advice a = advise(scene, o);
@@ -176,17 +182,8 @@ TEST(AdvisorCollisions, FiveHundredBallsOnAQuarterSquareMetreMustStack) {
 // over particles of 0.1% of their density) then changes them as much: the advice says they are
 // within the scene's chaos and warns, and a scene whose balls never meet measures no chaos.
 TEST(AdvisorCollisions, DifferencesNoLargerThanAMovedStartGivesAreMarkedAsTheScenesChaos) {
-    Scene scene;
-    scene.room.center = {0, 1, 0};
-    scene.room.size = {0.5, 2, 0.5};
+    Scene scene = pour_of(200);
     scene.collisions.enabled = true;
-    Emitter pour;
-    pour.count = 200;
-    pour.region_min = {-0.2, 0.1, -0.2};
-    pour.region_max = {0.2, 1.9, 0.2};
-    pour.speed_min = pour.speed_max = 0.0;
-    pour.radius_min = pour.radius_max = 0.02;
-    scene.emitter = pour;
     AdviceOptions o;
     o.max_duration_s = 3.0;
     const VariantAdvice v = advise(scene, o).variants[0];
