@@ -49,8 +49,14 @@ void variant_advice(const VariantAdvice& a) {
                 a.max_drag_to_weight, a.max_mach, ratio);
     ImGui::Text("cheapest adequate drag model: %s", to_string(a.cheapest_adequate));
     collision_estimate(a);
-    for (const std::string& v : a.verdicts) ImGui::BulletText("%s", v.c_str());
-    for (const std::string& w : a.warnings) ImGui::TextColored({1.0f, 0.75f, 0.3f, 1.0f}, "warning: %s", w.c_str());
+    // Wrapped: a verdict names each metric beyond tolerance, a line too long for the panel.
+    for (const std::string& v : a.verdicts) {
+        ImGui::Bullet();
+        ImGui::TextWrapped("%s", v.c_str());
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    for (const std::string& w : a.warnings) ImGui::TextWrapped("warning: %s", w.c_str());
+    ImGui::PopStyleColor();
     // One row per term of the table (physics/studies/advisor_terms.hpp), one column per metric:
     // the difference on - off (drag models: model - sphere_re), highlighted beyond tolerance.
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit;
