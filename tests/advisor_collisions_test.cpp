@@ -3,6 +3,7 @@
 // small balls in a big room (off, and the runs measure exactly nothing), 500 balls of 2 cm over
 // a quarter square metre of floor (on: they need three layers, and the runs measure it).
 #include "physics/studies/advisor.hpp"
+#include "physics/studies/advisor_runs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -193,25 +194,44 @@ TEST(AdvisorCollisions, DifferencesNoLargerThanAMovedStartGivesAreMarkedAsTheSce
     EXPECT_TRUE(v.warnings.front().starts_with("the trajectories are chaotic: moving every start by half the length tolerance "
                                                "(0.5 mm) changes "))
         << joined(v.warnings);
-    // The rule, metric by metric: marked exactly when beyond tolerance and within twice the nudge's.
+    // The rules, metric by metric: marked exactly when beyond tolerance and within twice the
+    // nudge's; systematic when marked and the mean shift is past tolerance and 3 standard errors;
+    // a row all within the chaos matters exactly when a metric is systematic.
     std::size_t marked = 0;
-    for (const ModelRun& r : v.runs)
+    for (const ModelRun& r : v.runs) {
+        bool all = r.not_applicable.empty(), beyond = false, shifted = false;
         for (AdviceMetric m : advice_metrics) {
             const MetricDelta& d = r.metric(m);
             const MetricDelta& c = v.chaos.metric(m);
             const bool within = d.beyond_tolerance && c.beyond_tolerance &&
                                 std::abs(d.difference) <= chaos_factor * std::abs(c.difference);
             EXPECT_EQ(d.within_chaos, within) << r.term << ", " << to_string(m);
+            const bool past = m != AdviceMetric::landing_point && d.samples >= systematic_samples &&
+                              std::abs(d.mean) > AdviceTolerances{}.absolute(m) && std::abs(d.mean) > 3.0 * d.standard_error;
+            EXPECT_EQ(d.systematic, within && past) << r.term << ", " << to_string(m);
+            EXPECT_LE(std::abs(d.mean), std::abs(d.difference) + 1e-12) << r.term << ", " << to_string(m) << ": a mean past the largest";
             marked += d.within_chaos;
+            if (d.beyond_tolerance) {
+                all = all && within;
+                beyond = true;
+            }
+            shifted = shifted || d.systematic;
         }
+        EXPECT_EQ(r.within_chaos, all && beyond) << r.term;
+        if (r.within_chaos) {
+            EXPECT_EQ(r.matters, shifted) << r.term;
+        }
+    }
     EXPECT_GT(marked, 0u);
     const auto buoyancy = std::find_if(v.runs.begin(), v.runs.end(), [](const ModelRun& r) { return r.term == "buoyancy"; });
     ASSERT_NE(buoyancy, v.runs.end());
-    if (buoyancy->within_chaos) {
-        const std::string& verdict = verdict_starting(v, "buoyancy is off but would change ");
-        EXPECT_NE(verdict.find("all within the scene's chaos (moving every start by half the length tolerance gives "),
+    if (buoyancy->within_chaos && !buoyancy->matters) {
+        const std::string& verdict = verdict_starting(v, "buoyancy is off, and its effect cannot be told from the scene's chaos: ");
+        EXPECT_NE(verdict.find("particle by particle all within the scene's chaos (moving every start by half the length tolerance "
+                               "gives "),
                   std::string::npos)
             << verdict;
+        EXPECT_NE(verdict.find("and no mean shift is beyond tolerance and 3 standard errors (largest: "), std::string::npos) << verdict;
     }
 
     // Five balls 2 m apart dropped straight down never meet: the moved starts change nothing
@@ -227,6 +247,33 @@ TEST(AdvisorCollisions, DifferencesNoLargerThanAMovedStartGivesAreMarkedAsTheSce
     for (const ModelRun& r : calm.runs) EXPECT_FALSE(r.within_chaos) << r.term;
     apart.collisions.enabled = false;
     EXPECT_FALSE(advise(apart, {}).variants[0].chaos_measured) << "no collisions: no chaos run";
+}
+
+// The mean shift and its standard error over the particles: differences of 1, 2, 3 and 4 ms in
+// landing time give a mean of 2.5 ms and a standard error of sd / sqrt(4) = 1.291 / 2 ms; a
+// particle that lands in one run only is a bound, not a difference, and is left out.
+TEST(AdvisorCollisions, MeanShiftsAndTheirStandardErrorsOverTheParticles) {
+    RunOutcome value, baseline;
+    value.end_time = baseline.end_time = 10.0;
+    for (int k = 0; k < 4; ++k) {
+        ParticleOutcome b;
+        b.landing_time = 1.0 + k;
+        ParticleOutcome v = b;
+        v.landing_time = *b.landing_time + 1e-3 * (k + 1);
+        baseline.particles.push_back(b);
+        value.particles.push_back(v);
+    }
+    ParticleOutcome lands_once;
+    lands_once.landing_time = 2.0;
+    value.particles.push_back(lands_once);
+    baseline.particles.push_back(ParticleOutcome{});
+    ModelRun r;
+    compare_runs(value, baseline, AdviceTolerances{}, r);
+    const MetricDelta& d = r.metric(AdviceMetric::landing_time);
+    EXPECT_EQ(d.samples, 4u);
+    EXPECT_NEAR(d.mean, 2.5e-3, 1e-15);
+    EXPECT_NEAR(d.standard_error, std::sqrt(5.0 / 3.0) * 1e-3 / 2.0, 1e-15);
+    EXPECT_EQ(r.metric(AdviceMetric::landing_point).samples, 0u) << "a distance, never tallied";
 }
 
 }  // namespace

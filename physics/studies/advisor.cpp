@@ -139,26 +139,55 @@ AdviceMetric most_chaotic(const ModelRun& r, const ModelRun& chaos) {
     return best;
 }
 
-// Marks a row's metrics beyond tolerance that moving the starts (by half the length tolerance) changes
-// as much (up to chaos_factor times); the row is within the chaos when all of them are.
-void mark_chaos(const ModelRun& chaos, ModelRun& r) {
-    bool all = r.matters;
-    for (std::size_t k = 0; k < advice_metric_count; ++k) {
-        MetricDelta& d = r.metrics[k];
-        const MetricDelta& c = chaos.metrics[k];
-        if (!d.beyond_tolerance) continue;
-        d.within_chaos = c.beyond_tolerance && std::abs(d.difference) <= chaos_factor * std::abs(c.difference);
-        all = all && d.within_chaos;
-    }
-    r.within_chaos = all;
+// A metric within the chaos whose mean shift over the particles is beyond tolerance and chance.
+bool systematic(AdviceMetric m, const MetricDelta& d, const AdviceTolerances& tol) {
+    return m != AdviceMetric::landing_point && d.samples >= systematic_samples && std::abs(d.mean) > tol.absolute(m) &&
+           std::abs(d.mean) > systematic_errors * d.standard_error;
 }
 
-// For a row whose differences beyond tolerance are all within the scene's chaos.
+// Marks a row's metrics beyond tolerance that moving the starts (by half the length tolerance)
+// changes as much (up to chaos_factor times). A row whose every such metric is marked is within
+// the chaos, and then matters only through a systematic mean shift.
+void mark_chaos(const ModelRun& chaos, const AdviceTolerances& tol, ModelRun& r) {
+    bool all = r.matters, shifted = false;
+    for (AdviceMetric m : advice_metrics) {
+        MetricDelta& d = r.metrics[static_cast<std::size_t>(m)];
+        const MetricDelta& c = chaos.metric(m);
+        if (!d.beyond_tolerance) continue;
+        d.within_chaos = c.beyond_tolerance && std::abs(d.difference) <= chaos_factor * std::abs(c.difference);
+        d.systematic = d.within_chaos && systematic(m, d, tol);
+        all = all && d.within_chaos;
+        shifted = shifted || d.systematic;
+    }
+    r.within_chaos = all;
+    if (all) r.matters = shifted;
+}
+
+// "impact speed -0.12 m/s +- 21 mm/s over 240"
+std::string mean_words(AdviceMetric m, const MetricDelta& d) {
+    return fmt::format("{} {} +- {} over {}", to_string(m), quantity(d.mean, unit_of(m), true),
+                       quantity(d.standard_error, unit_of(m), false), d.samples);
+}
+
+// For a row whose differences beyond tolerance are all within the scene's chaos: the nudge's
+// difference, and the systematic mean shifts (or the largest mean shift, which is not).
 std::string chaos_words(const ModelRun& r, const ModelRun& chaos) {
     const AdviceMetric m = most_chaotic(r, chaos);
-    return fmt::format("all within the scene's chaos (moving every start by half the length tolerance gives {}): particle by "
-                       "particle, the term's own effect cannot be told from it",
-                       describe(m, chaos.metric(m)));
+    std::string s = fmt::format("particle by particle all within the scene's chaos (moving every start by half the length "
+                                "tolerance gives {})",
+                                describe(m, chaos.metric(m)));
+    std::string shifts;
+    AdviceMetric largest_shift = m;
+    double largest_ratio = -1.0;
+    for (AdviceMetric k : advice_metrics) {
+        const MetricDelta& d = r.metric(k);
+        if (d.systematic) shifts += (shifts.empty() ? "" : ", ") + mean_words(k, d);
+        const double ratio = d.within_chaos && d.standard_error > 0.0 ? std::abs(d.mean) / d.standard_error : -1.0;
+        if (k != AdviceMetric::landing_point && ratio > largest_ratio) largest_shift = k, largest_ratio = ratio;
+    }
+    if (!shifts.empty()) return s + ", but on average " + shifts + ": a systematic effect";
+    return s + fmt::format(", and no mean shift is beyond tolerance and {:g} standard errors (largest: {})", systematic_errors,
+                           mean_words(largest_shift, r.metric(largest_shift)));
 }
 
 // The starts moved `distance` horizontally, diagonally in x and z, in a pattern that differs
@@ -181,10 +210,22 @@ std::string beyond_list(const ModelRun& r) {
     return s;
 }
 
+// A row beyond tolerance only by the scene's chaos, with no systematic shift: its effect, if
+// any, is smaller than what the advice's particles can show.
+std::string chaos_verdict(const TermRow& row, const ModelRun& r, const ModelRun& chaos, const std::string& extra) {
+    const std::string why = beyond_list(r) + "; " + chaos_words(r, chaos) + extra;
+    if (row.kind == TermKind::alternative)
+        return fmt::format("{} cannot be told from {} drag within the scene's chaos: {}: enough here", row.name,
+                           to_string(reference_drag), why);
+    if (r.in_scene) return fmt::format("{}: its effect cannot be told from the scene's chaos: {}: it could be turned off", row.name, why);
+    return fmt::format("{} is off, and its effect cannot be told from the scene's chaos: {}", row.name, why);
+}
+
 std::string verdict(const TermRow& row, const ModelRun& r, const ModelRun& chaos, const std::string& note,
                     const AdviceTolerances& tol) {
     if (!r.not_applicable.empty()) return fmt::format("{}: {}", row.name, r.not_applicable);
     const std::string extra = note.empty() ? "" : "; " + note;
+    if (r.within_chaos && !r.matters) return chaos_verdict(row, r, chaos, extra);
     const std::string most = fmt::format("(largest: {})", describe(largest(r, tol), r.metric(largest(r, tol))));
     const std::string chaotic = r.within_chaos ? "; " + chaos_words(r, chaos) : std::string();
     if (row.kind == TermKind::alternative)
@@ -201,7 +242,8 @@ std::string verdict(const TermRow& row, const ModelRun& r, const ModelRun& chaos
 
 // What the runs measured, in words: the metrics beyond tolerance, or the largest within.
 std::string measured_words(const ModelRun& r, const ModelRun& chaos, const AdviceTolerances& tol) {
-    if (r.matters) return beyond_list(r) + (r.within_chaos ? "; " + chaos_words(r, chaos) : std::string());
+    if (r.within_chaos) return beyond_list(r) + "; " + chaos_words(r, chaos);
+    if (r.matters) return beyond_list(r);
     return fmt::format("nothing beyond tolerance (largest: {})", describe(largest(r, tol), r.metric(largest(r, tol))));
 }
 
@@ -312,7 +354,7 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
         if (const char* why = row.not_applicable ? row.not_applicable(model, particles.size()) : nullptr)
             r.not_applicable = why;
         else compare_runs(runs.at(keys[k].first), runs.at(keys[k].second), tol, r);
-        if (a.chaos.matters) mark_chaos(a.chaos, r);
+        if (a.chaos.matters) mark_chaos(a.chaos, tol, r);
         a.runs.push_back(r);
     }
     const std::size_t collisions_row = row_index(collisions_term);
@@ -320,14 +362,18 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
     for (std::size_t k = 0; k < table.size(); ++k)
         if (table[k].verdict) a.verdicts.push_back(row_verdict(table[k], {model, a, a.runs[k], measured_words(a.runs[k], a.chaos, tol)}, tol));
 
-    // The cheapest drag model whose run stays within tolerance of the reference on every metric.
+    // The cheapest drag model whose run stays within tolerance of the reference on every metric
+    // (or beyond it only by the scene's chaos).
+    bool by_chaos = false;
     for (const ModelRun& r : a.runs)
         if (r.alternative && !r.matters && r.not_applicable.empty()) {
             a.cheapest_adequate = r.model;
+            by_chaos = r.within_chaos;
             break;
         }
-    a.verdicts.push_back(fmt::format("cheapest drag model within tolerance of {}: '{}'; this variant uses '{}'",
-                                     to_string(reference_drag), to_string(a.cheapest_adequate), to_string(model.drag.model)));
+    a.verdicts.push_back(fmt::format("cheapest drag model within tolerance of {}{}: '{}'; this variant uses '{}'",
+                                     to_string(reference_drag), by_chaos ? " or of the scene's chaos" : "",
+                                     to_string(a.cheapest_adequate), to_string(model.drag.model)));
     add_warnings(model, a);
     return a;
 }

@@ -38,6 +38,10 @@ inline constexpr std::array<AdviceMetric, advice_metric_count> advice_metrics = 
 // chaos_factor times the nudge's is as likely chaos as a term's effect.
 inline constexpr double chaos_nudge = 0.5;
 inline constexpr double chaos_factor = 2.0;
+// A mean shift counts as systematic past this many standard errors (a two-sided 0.3% chance of
+// pure noise), from at least systematic_samples differences.
+inline constexpr double systematic_errors = 3.0;
+inline constexpr std::size_t systematic_samples = 10;
 inline constexpr int advice_impacts = 3;  // impact speeds compared: the first three floor impacts
 const char* to_string(AdviceMetric m);    // "landing time"
 const char* json_key(AdviceMetric m);     // "landing_time_s"
@@ -81,6 +85,13 @@ struct MetricDelta {
     // Beyond tolerance, but not more than chaos_factor times what moving the starts changes
     // (VariantAdvice::chaos): as likely the scene's chaos as the term's own effect.
     bool within_chaos = false;
+    // Over the particles (and impacts) that both runs measured, the signed differences' mean and
+    // its standard error (sd / sqrt(samples)); not for the landing point, a distance.
+    std::size_t samples = 0;
+    double mean = 0.0, standard_error = 0.0;
+    // Within the chaos particle by particle, yet the mean shift is beyond tolerance and beyond
+    // chance (more than systematic_errors standard errors from 0): the term's own effect.
+    bool systematic = false;
     std::size_t particle = 0;
     int impact = 0;            // impact_speed: which floor impact (1 = the first)
     std::optional<double> relative() const;  // difference / baseline (none for the landing point or b = 0)
@@ -100,7 +111,9 @@ struct ModelRun {
     bool buoyancy = false;
     std::array<MetricDelta, advice_metric_count> metrics{};
     bool matters = false;  // some metric beyond tolerance
-    bool within_chaos = false;  // every metric beyond tolerance is within the scene's chaos (MetricDelta::within_chaos)
+    // Every metric beyond tolerance is within the scene's chaos (MetricDelta::within_chaos):
+    // `matters` then means some of them is systematic.
+    bool within_chaos = false;
     // Max over particles of |landing point difference| and |apex difference|, m (summary numbers
     // beside the metrics: the JSON's landing_difference_m and apex_difference_m).
     double landing_difference_m = 0.0;
@@ -130,9 +143,10 @@ struct VariantAdvice {
     // that size would. The scene is run again with every start moved by half the length
     // tolerance and compared with its own run (chaos: term "nudged starts"). Where that nudge moves a
     // metric beyond tolerance, a row's difference in it up to chaos_factor times the nudge's is
-    // marked (MetricDelta::within_chaos), its verdict says so, and the variant warns: compared
-    // particle by particle, such a difference does not show the term's own effect. It still
-    // counts toward `matters` (the term did change those trajectories that much).
+    // marked (MetricDelta::within_chaos), and the variant warns: compared particle by particle,
+    // such a difference does not show the term's own effect. A row whose every difference beyond
+    // tolerance is marked matters only if one of them shifts on average, beyond tolerance and
+    // chance (MetricDelta::systematic: chaos scatters each particle, a term shifts them all).
     bool chaos_measured = false;
     ModelRun chaos;
     // max over the trajectory of (sphere_re drag) / (Stokes drag) = Cd(Re) Re / 24

@@ -145,45 +145,71 @@ Candidate candidate(AdviceMetric m, double value, double baseline, bool at_least
 }
 
 // A time that one run may not have reached: the run's end time is then a lower bound.
-void consider_time(AdviceMetric m, const std::optional<double>& v, const std::optional<double>& b, double v_end,
-                   double b_end, std::size_t i, const AdviceTolerances& tol, MetricDelta& best, double& excess) {
-    if (!v && !b) return;
-    consider(best, excess, candidate(m, v.value_or(v_end), b.value_or(b_end), !v || !b, i, tol));
+std::optional<Candidate> time_candidate(AdviceMetric m, const std::optional<double>& v, const std::optional<double>& b,
+                                        double v_end, double b_end, std::size_t i, const AdviceTolerances& tol) {
+    if (!v && !b) return std::nullopt;
+    return candidate(m, v.value_or(v_end), b.value_or(b_end), !v || !b, i, tol);
 }
+
+// The signed differences measured in both runs, summed for their mean and standard error.
+struct Tally {
+    double sum = 0.0, sum_of_squares = 0.0;
+    std::size_t count = 0;
+    void add(double d) {
+        sum += d;
+        sum_of_squares += d * d;
+        ++count;
+    }
+    void finish(MetricDelta& out) const {
+        out.samples = count;
+        if (count == 0) return;
+        out.mean = sum / static_cast<double>(count);
+        if (count < 2) return;
+        const double variance = std::max(0.0, (sum_of_squares - sum * out.mean) / static_cast<double>(count - 1));
+        out.standard_error = std::sqrt(variance / static_cast<double>(count));
+    }
+};
 
 }  // namespace
 
 void compare_runs(const RunOutcome& value, const RunOutcome& baseline, const AdviceTolerances& tol, ModelRun& out) {
     std::array<double, advice_metric_count> excess{};
-    auto slot = [&](AdviceMetric m) -> MetricDelta& { return out.metrics[static_cast<std::size_t>(m)]; };
-    auto excess_of = [&](AdviceMetric m) -> double& { return excess[static_cast<std::size_t>(m)]; };
+    std::array<Tally, advice_metric_count> tally{};
+    // Each particle's (and impact's) candidate: the largest past its tolerance is kept, and the
+    // signed differences that both runs reached are tallied (the landing point's is a distance,
+    // never signed: not tallied).
+    auto take = [&](AdviceMetric m, const Candidate& c) {
+        const auto k = static_cast<std::size_t>(m);
+        consider(out.metrics[k], excess[k], c);
+        if (!c.d.at_least && m != AdviceMetric::landing_point) tally[k].add(c.d.difference);
+    };
     for (std::size_t i = 0; i < value.particles.size() && i < baseline.particles.size(); ++i) {
         const ParticleOutcome& v = value.particles[i];
         const ParticleOutcome& b = baseline.particles[i];
         for (AdviceMetric m : {AdviceMetric::landing_time, AdviceMetric::time_to_rest}) {
             const bool landing = m == AdviceMetric::landing_time;
-            consider_time(m, landing ? v.landing_time : v.rest_time, landing ? b.landing_time : b.rest_time, value.end_time,
-                          baseline.end_time, i, tol, slot(m), excess_of(m));
+            if (const std::optional<Candidate> c = time_candidate(m, landing ? v.landing_time : v.rest_time,
+                                                                  landing ? b.landing_time : b.rest_time, value.end_time,
+                                                                  baseline.end_time, i, tol))
+                take(m, *c);
         }
         const std::size_t impacts = std::min(v.impact_speeds.size(), b.impact_speeds.size());
         for (std::size_t k = 0; k < impacts; ++k) {
             Candidate c = candidate(AdviceMetric::impact_speed, v.impact_speeds[k], b.impact_speeds[k], false, i, tol);
             c.d.impact = static_cast<int>(k) + 1;
-            consider(slot(AdviceMetric::impact_speed), excess_of(AdviceMetric::impact_speed), c);
+            take(AdviceMetric::impact_speed, c);
         }
         if (v.landing && b.landing)
-            consider(slot(AdviceMetric::range), excess_of(AdviceMetric::range),
-                     candidate(AdviceMetric::range, horizontal_distance(*v.landing, v.start),
-                               horizontal_distance(*b.landing, b.start), false, i, tol));
-        consider(slot(AdviceMetric::apex_height), excess_of(AdviceMetric::apex_height),
-                 candidate(AdviceMetric::apex_height, v.apex_height, b.apex_height, false, i, tol));
+            take(AdviceMetric::range, candidate(AdviceMetric::range, horizontal_distance(*v.landing, v.start),
+                                                horizontal_distance(*b.landing, b.start), false, i, tol));
+        take(AdviceMetric::apex_height, candidate(AdviceMetric::apex_height, v.apex_height, b.apex_height, false, i, tol));
         // Landing point, or where a particle that never landed ended up.
         const double moved = glm::length(v.landing.value_or(v.end) - b.landing.value_or(b.end));
-        consider(slot(AdviceMetric::landing_point), excess_of(AdviceMetric::landing_point),
-                 candidate(AdviceMetric::landing_point, moved, 0.0, !v.landing || !b.landing, i, tol));
+        take(AdviceMetric::landing_point, candidate(AdviceMetric::landing_point, moved, 0.0, !v.landing || !b.landing, i, tol));
         out.landing_difference_m = std::max(out.landing_difference_m, moved);
         out.apex_difference_m = std::max(out.apex_difference_m, std::abs(v.apex_height - b.apex_height));
     }
+    for (std::size_t k = 0; k < advice_metric_count; ++k) tally[k].finish(out.metrics[k]);
     out.matters = std::any_of(out.metrics.begin(), out.metrics.end(), [](const MetricDelta& d) { return d.beyond_tolerance; });
 }
 

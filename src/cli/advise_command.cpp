@@ -57,6 +57,10 @@ Json metrics_json(const ModelRun& r) {
         x["beyond_tolerance"] = d.beyond_tolerance;
         x["at_least"] = d.at_least;
         x["within_chaos"] = d.within_chaos;
+        x["systematic"] = d.systematic;
+        x["samples"] = d.samples;
+        x["mean"] = optional_number(d.samples > 0, d.mean);
+        x["standard_error"] = optional_number(d.samples > 1, d.standard_error);
         x["particle"] = d.measured ? Json(d.particle) : Json(nullptr);
         x["impact"] = m == AdviceMetric::impact_speed && d.measured ? Json(d.impact) : Json(nullptr);
         metrics[json_key(m)] = x;
