@@ -354,7 +354,8 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
         if (const char* why = row.not_applicable ? row.not_applicable(model, particles.size()) : nullptr)
             r.not_applicable = why;
         else compare_runs(runs.at(keys[k].first), runs.at(keys[k].second), tol, r);
-        if (a.chaos.matters) mark_chaos(a.chaos, tol, r);
+        // The collisions row is the chaos's source, not a small change within it: not marked.
+        if (a.chaos.matters && std::string_view(row.name) != collisions_term) mark_chaos(a.chaos, tol, r);
         a.runs.push_back(r);
     }
     const std::size_t collisions_row = row_index(collisions_term);

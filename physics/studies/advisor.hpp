@@ -147,6 +147,7 @@ struct VariantAdvice {
     // such a difference does not show the term's own effect. A row whose every difference beyond
     // tolerance is marked matters only if one of them shifts on average, beyond tolerance and
     // chance (MetricDelta::systematic: chaos scatters each particle, a term shifts them all).
+    // The collisions row, the chaos's source rather than a small change within it, is not marked.
     bool chaos_measured = false;
     ModelRun chaos;
     // max over the trajectory of (sphere_re drag) / (Stokes drag) = Cd(Re) Re / 24
