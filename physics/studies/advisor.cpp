@@ -281,6 +281,41 @@ std::vector<double> density_ratios(const Model& model, const std::vector<Particl
     return r;
 }
 
+// The scene's own run (`own`) against a run from starts moved by half the length tolerance
+// (VariantAdvice::chaos), and the warning when that alone moves a metric beyond tolerance.
+void measure_chaos(const Model& model, const std::vector<ParticleSpec>& particles, const RunOutcome& own,
+                   const AdviceOptions& o, VariantAdvice& a) {
+    const AdviceTolerances tol = o.tolerances();
+    const double nudge = chaos_nudge * tol.metres;
+    const RunOutcome again = observe_run(model, nudged(model, particles, nudge), o.max_duration_s, false, o.cancel);
+    a.chaos.term = "nudged starts";
+    a.chaos.in_scene = true;
+    compare_runs(again, own, tol, a.chaos);
+    a.chaos_measured = true;
+    a.simulated_s = std::max(a.simulated_s, again.end_time);
+    ++a.distinct_runs;
+    if (a.chaos.matters)
+        a.warnings.push_back(fmt::format("the trajectories are chaotic: moving every start by half the length tolerance ({}) "
+                                         "changes {}; particle by particle, differences up to {:g}x these may be the "
+                                         "scene's chaos rather than a term's own effect",
+                                         quantity(nudge, "m", false), beyond_list(a.chaos), chaos_factor));
+}
+
+// The cheapest drag model whose run stays within tolerance of the reference on every metric
+// (or beyond it only by the scene's chaos), and its verdict.
+void choose_cheapest_drag(const Model& model, VariantAdvice& a) {
+    bool by_chaos = false;
+    for (const ModelRun& r : a.runs)
+        if (r.alternative && !r.matters && r.not_applicable.empty()) {
+            a.cheapest_adequate = r.model;
+            by_chaos = r.within_chaos;
+            break;
+        }
+    a.verdicts.push_back(fmt::format("cheapest drag model within tolerance of {}{}: '{}'; this variant uses '{}'",
+                                     to_string(reference_drag), by_chaos ? " or of the scene's chaos" : "",
+                                     to_string(a.cheapest_adequate), to_string(model.drag.model)));
+}
+
 // `particles`: the ones the runs follow (the first 100); `all`: the scene's, for the collision estimate.
 VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>& particles,
                              std::span<const ParticleSpec> all, const AdviceOptions& o,
@@ -313,20 +348,7 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
         }
     for (const auto& [key, r] : runs) a.simulated_s = std::max(a.simulated_s, r.end_time);
     a.distinct_runs = runs.size();
-    if (model.collisions.enabled && particles.size() >= 2) {
-        const RunOutcome again = observe_run(model, nudged(model, particles, chaos_nudge * tol.metres), o.max_duration_s, false, o.cancel);
-        a.chaos.term = "nudged starts";
-        a.chaos.in_scene = true;
-        compare_runs(again, runs.at(nullptr), tol, a.chaos);
-        a.chaos_measured = true;
-        a.simulated_s = std::max(a.simulated_s, again.end_time);
-        ++a.distinct_runs;
-        if (a.chaos.matters)
-            a.warnings.push_back(fmt::format("the trajectories are chaotic: moving every start by half the length tolerance ({}) "
-                                             "changes {}; particle by particle, differences up to {:g}x these may be the "
-                                             "scene's chaos rather than a term's own effect",
-                                             quantity(chaos_nudge * tol.metres, "m", false), beyond_list(a.chaos), chaos_factor));
-    }
+    if (model.collisions.enabled && particles.size() >= 2) measure_chaos(model, particles, runs.at(nullptr), o, a);
 
     const RunOutcome& ref = runs.at(reference);
     a.re_min = std::isfinite(ref.re_min) ? ref.re_min : 0.0;
@@ -363,18 +385,7 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
     for (std::size_t k = 0; k < table.size(); ++k)
         if (table[k].verdict) a.verdicts.push_back(row_verdict(table[k], {model, a, a.runs[k], measured_words(a.runs[k], a.chaos, tol)}, tol));
 
-    // The cheapest drag model whose run stays within tolerance of the reference on every metric
-    // (or beyond it only by the scene's chaos).
-    bool by_chaos = false;
-    for (const ModelRun& r : a.runs)
-        if (r.alternative && !r.matters && r.not_applicable.empty()) {
-            a.cheapest_adequate = r.model;
-            by_chaos = r.within_chaos;
-            break;
-        }
-    a.verdicts.push_back(fmt::format("cheapest drag model within tolerance of {}{}: '{}'; this variant uses '{}'",
-                                     to_string(reference_drag), by_chaos ? " or of the scene's chaos" : "",
-                                     to_string(a.cheapest_adequate), to_string(model.drag.model)));
+    choose_cheapest_drag(model, a);
     add_warnings(model, a);
     return a;
 }
