@@ -114,32 +114,36 @@ struct RunPlan {
     }
 };
 
+// The metric of the highest score (`score(m)`: none for a metric that is no candidate), or
+// `fallback` when none is.
+template <class Score>
+AdviceMetric highest(Score score, AdviceMetric fallback = AdviceMetric::landing_point) {
+    AdviceMetric best = fallback;
+    double top = -1.0;
+    for (AdviceMetric m : advice_metrics)
+        if (const std::optional<double> s = score(m); s && *s > top) best = m, top = *s;
+    return best;
+}
+
 // Largest metric relative to its tolerance (for "nothing beyond tolerance (largest: ...)").
 AdviceMetric largest(const ModelRun& r, const AdviceTolerances& tol) {
-    AdviceMetric best = AdviceMetric::landing_point;
-    double best_ratio = -1.0;
-    for (AdviceMetric m : advice_metrics) {
+    return highest([&](AdviceMetric m) -> std::optional<double> {
         const MetricDelta& d = r.metric(m);
-        if (!d.measured) continue;
-        const double ratio = std::abs(d.difference) / tol.limit(m, d.baseline);
-        if (ratio > best_ratio) best = m, best_ratio = ratio;
-    }
-    return best;
+        if (!d.measured) return std::nullopt;
+        return std::abs(d.difference) / tol.limit(m, d.baseline);
+    });
 }
 
 // The metric beyond tolerance furthest past the nudge's difference (all are within the chaos).
 AdviceMetric most_chaotic(const ModelRun& r, const ModelRun& chaos) {
-    AdviceMetric best = AdviceMetric::landing_point;
-    double best_ratio = -1.0;
-    for (AdviceMetric m : advice_metrics)
-        if (r.metric(m).within_chaos) {
-            const double ratio = std::abs(r.metric(m).difference) / std::abs(chaos.metric(m).difference);
-            if (ratio > best_ratio) best = m, best_ratio = ratio;
-        }
-    return best;
+    return highest([&](AdviceMetric m) -> std::optional<double> {
+        if (!r.metric(m).within_chaos) return std::nullopt;
+        return std::abs(r.metric(m).difference) / std::abs(chaos.metric(m).difference);
+    });
 }
 
-// A metric within the chaos whose mean shift over the particles is beyond tolerance and chance.
+// A metric within the chaos whose mean shift over the particles is beyond tolerance (the
+// absolute one: a mean has no one baseline value for the relative) and chance.
 bool systematic(AdviceMetric m, const MetricDelta& d, const AdviceTolerances& tol) {
     return m != AdviceMetric::landing_point && d.samples >= systematic_samples && std::abs(d.mean) > tol.absolute(m) &&
            std::abs(d.mean) > systematic_errors * d.standard_error;
@@ -177,15 +181,17 @@ std::string chaos_words(const ModelRun& r, const ModelRun& chaos) {
                                 "tolerance gives {})",
                                 describe(m, chaos.metric(m)));
     std::string shifts;
-    AdviceMetric largest_shift = m;
-    double largest_ratio = -1.0;
-    for (AdviceMetric k : advice_metrics) {
-        const MetricDelta& d = r.metric(k);
-        if (d.systematic) shifts += (shifts.empty() ? "" : ", ") + mean_words(k, d);
-        const double ratio = d.within_chaos && d.standard_error > 0.0 ? std::abs(d.mean) / d.standard_error : -1.0;
-        if (k != AdviceMetric::landing_point && ratio > largest_ratio) largest_shift = k, largest_ratio = ratio;
-    }
+    for (AdviceMetric k : advice_metrics)
+        if (r.metric(k).systematic) shifts += (shifts.empty() ? "" : ", ") + mean_words(k, r.metric(k));
     if (!shifts.empty()) return s + ", but on average " + shifts + ": a systematic effect";
+    // The mean shift furthest from 0 in standard errors.
+    const AdviceMetric largest_shift = highest(
+        [&](AdviceMetric k) -> std::optional<double> {
+            const MetricDelta& d = r.metric(k);
+            if (k == AdviceMetric::landing_point || !d.within_chaos || !(d.standard_error > 0.0)) return std::nullopt;
+            return std::abs(d.mean) / d.standard_error;
+        },
+        m);
     return s + fmt::format(", and no mean shift is beyond tolerance and {:g} standard errors (largest: {})", systematic_errors,
                            mean_words(largest_shift, r.metric(largest_shift)));
 }
