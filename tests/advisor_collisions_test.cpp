@@ -190,6 +190,10 @@ TEST(AdvisorCollisions, DifferencesNoLargerThanAMovedStartGivesAreMarkedAsTheSce
     const VariantAdvice v = advise(scene, o).variants[0];
     ASSERT_TRUE(v.chaos_measured);
     ASSERT_TRUE(v.chaos.matters) << joined(v.warnings);
+    // The nudged run is the variant's own scene: its settings, as the JSON reports them.
+    EXPECT_EQ(v.chaos.model, v.configured);
+    EXPECT_FALSE(v.chaos.with_wind);
+    EXPECT_EQ(v.chaos.buoyancy, v.buoyancy);
     EXPECT_GT(v.chaos.metric(AdviceMetric::landing_point).difference, 1e-2) << "centimetres from half a millimetre";
     EXPECT_TRUE(v.warnings.front().starts_with("the trajectories are chaotic: moving every start by half the length tolerance "
                                                "(0.5 mm) changes "))

@@ -296,6 +296,9 @@ void measure_chaos(const Model& model, const std::vector<ParticleSpec>& particle
     const RunOutcome again = observe_run(model, nudged(model, particles, nudge), o.max_duration_s, false, o.cancel);
     a.chaos.term = "nudged starts";
     a.chaos.in_scene = true;
+    a.chaos.model = model.drag.model;  // the run's settings: the variant's own
+    a.chaos.with_wind = model.world.wind.kind != WindKind::none;
+    a.chaos.buoyancy = model.world.buoyancy;
     compare_runs(again, own, tol, a.chaos);
     a.chaos_measured = true;
     a.simulated_s = std::max(a.simulated_s, again.end_time);
