@@ -259,6 +259,25 @@ TEST(AdvisorCollisions, DifferencesNoLargerThanAMovedStartGivesAreMarkedAsTheSce
     EXPECT_FALSE(advise(apart, {}).variants[0].chaos_measured) << "no collisions: no chaos run";
 }
 
+TEST(AdvisorCollisions, ProgressCountsTheNudgedRun) {
+    // The share done is reported before each run after the first, the nudged one included: it
+    // rises evenly to the last run's start and then to 1 (it stood at 1 while the nudged run ran).
+    Scene apart;
+    apart.room = big_room().room;
+    apart.collisions.enabled = true;
+    for (int k = 0; k < 5; ++k) apart.particles.push_back({{-4.0 + 2.0 * k, 1.0, 0}, {0, 0, 0}, 0.03, 0.01});
+    std::vector<double> shares;
+    AdviceOptions o;
+    o.progress = [&](double share) { shares.push_back(share); };
+    const VariantAdvice v = advise(apart, o).variants[0];
+    ASSERT_TRUE(v.chaos_measured);
+    const std::size_t runs = v.distinct_runs;  // the nudged one among them
+    ASSERT_EQ(shares.size(), runs) << ::testing::PrintToString(shares);  // before runs 2..runs, and the end
+    for (std::size_t k = 0; k + 1 < shares.size(); ++k)
+        EXPECT_DOUBLE_EQ(shares[k], static_cast<double>(k + 1) / static_cast<double>(runs)) << k;
+    EXPECT_EQ(shares.back(), 1.0);
+}
+
 // The mean shift and its standard error over the particles: differences of 1, 2, 3 and 4 ms in
 // landing time give a mean of 2.5 ms and a standard error of sd / sqrt(4) = 1.291 / 2 ms; a
 // particle that lands in one run only is a bound, not a difference, and is left out.

@@ -125,13 +125,15 @@ AdviceMetric highest(Score score, AdviceMetric fallback = AdviceMetric::landing_
     return best;
 }
 
-// Largest metric relative to its tolerance (for "nothing beyond tolerance (largest: ...)").
-AdviceMetric largest(const ModelRun& r, const AdviceTolerances& tol) {
-    return highest([&](AdviceMetric m) -> std::optional<double> {
+// The metric largest relative to its tolerance, described (for "nothing beyond tolerance
+// (largest: ...)").
+std::string describe_largest(const ModelRun& r, const AdviceTolerances& tol) {
+    const AdviceMetric largest = highest([&](AdviceMetric m) -> std::optional<double> {
         const MetricDelta& d = r.metric(m);
         if (!d.measured) return std::nullopt;
         return std::abs(d.difference) / tol.limit(m, d.baseline);
     });
+    return describe(largest, r.metric(largest));
 }
 
 // The metric beyond tolerance furthest past the nudge's difference (all are within the chaos).
@@ -232,7 +234,7 @@ std::string verdict(const TermRow& row, const ModelRun& r, const ModelRun& chaos
     if (!r.not_applicable.empty()) return fmt::format("{}: {}", row.name, r.not_applicable);
     const std::string extra = note.empty() ? "" : "; " + note;
     if (r.within_chaos && !r.matters) return chaos_verdict(row, r, chaos, extra);
-    const std::string most = fmt::format("(largest: {})", describe(largest(r, tol), r.metric(largest(r, tol))));
+    const std::string most = "(largest: " + describe_largest(r, tol) + ")";
     const std::string chaotic = r.within_chaos ? "; " + chaos_words(r, chaos) : std::string();
     if (row.kind == TermKind::alternative)
         return r.matters ? fmt::format("{} differs from {} drag: {}{}{}: not enough here", row.name, to_string(reference_drag),
@@ -250,7 +252,7 @@ std::string verdict(const TermRow& row, const ModelRun& r, const ModelRun& chaos
 std::string measured_words(const ModelRun& r, const ModelRun& chaos, const AdviceTolerances& tol) {
     if (r.within_chaos) return beyond_list(r) + "; " + chaos_words(r, chaos);
     if (r.matters) return beyond_list(r);
-    return fmt::format("nothing beyond tolerance (largest: {})", describe(largest(r, tol), r.metric(largest(r, tol))));
+    return "nothing beyond tolerance (largest: " + describe_largest(r, tol) + ")";
 }
 
 std::string row_verdict(const TermRow& row, const TermContext& c, const AdviceTolerances& tol) {
@@ -348,16 +350,22 @@ VariantAdvice advise_variant(const Model& model, const std::vector<ParticleSpec>
     for (const TermRow& row : term_table())
         keys.emplace_back(applicable(row) ? plan.key(model, row.measured) : nullptr,
                           applicable(row) ? plan.key(model, row.baseline) : nullptr);
+    // The share done before each run: the distinct runs, and the nudged one when it is made.
+    const bool chaos = model.collisions.enabled && particles.size() >= 2;
+    const double total_runs = static_cast<double>(plan.models.size() + (chaos ? 1 : 0));
     std::map<Builder, RunOutcome> runs;
     runs[reference] = observe_run(plan.models.at(reference), particles, o.max_duration_s, true, o.cancel);
     for (const auto& [key, m] : plan.models)
         if (!runs.count(key)) {
-            progress(static_cast<double>(runs.size()) / static_cast<double>(plan.models.size()));
+            progress(static_cast<double>(runs.size()) / total_runs);
             runs[key] = observe_run(m, particles, o.max_duration_s, false, o.cancel);
         }
     for (const auto& [key, r] : runs) a.simulated_s = std::max(a.simulated_s, r.end_time);
     a.distinct_runs = runs.size();
-    if (model.collisions.enabled && particles.size() >= 2) measure_chaos(model, particles, runs.at(nullptr), o, a);
+    if (chaos) {
+        progress(static_cast<double>(runs.size()) / total_runs);
+        measure_chaos(model, particles, runs.at(nullptr), o, a);
+    }
 
     const RunOutcome& ref = runs.at(reference);
     a.re_min = std::isfinite(ref.re_min) ? ref.re_min : 0.0;
