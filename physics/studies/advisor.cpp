@@ -219,9 +219,8 @@ std::string beyond_list(const ModelRun& r) {
 }
 
 // A row beyond tolerance only by the scene's chaos, with no systematic shift: its effect, if
-// any, is smaller than what the advice's particles can show.
-std::string chaos_verdict(const TermRow& row, const ModelRun& r, const ModelRun& chaos, const std::string& extra) {
-    const std::string why = beyond_list(r) + "; " + chaos_words(r, chaos) + extra;
+// any, is smaller than what the advice's particles can show. `why`: what was measured, in words.
+std::string chaos_verdict(const TermRow& row, const ModelRun& r, const std::string& why) {
     if (row.kind == TermKind::alternative)
         return fmt::format("{} cannot be told from {} drag within the scene's chaos: {}: enough here", row.name,
                            to_string(reference_drag), why);
@@ -229,26 +228,28 @@ std::string chaos_verdict(const TermRow& row, const ModelRun& r, const ModelRun&
     return fmt::format("{} is off, and its effect cannot be told from the scene's chaos: {}", row.name, why);
 }
 
-std::string verdict(const TermRow& row, const ModelRun& r, const ModelRun& chaos, const std::string& note,
+// `measured`: measured_words of the row's run (the metrics beyond tolerance, with the scene's
+// chaos where they are within it).
+std::string verdict(const TermRow& row, const ModelRun& r, const std::string& measured, const std::string& note,
                     const AdviceTolerances& tol) {
     if (!r.not_applicable.empty()) return fmt::format("{}: {}", row.name, r.not_applicable);
     const std::string extra = note.empty() ? "" : "; " + note;
-    if (r.within_chaos && !r.matters) return chaos_verdict(row, r, chaos, extra);
+    if (r.within_chaos && !r.matters) return chaos_verdict(row, r, measured + extra);
+    if (r.matters) {
+        if (row.kind == TermKind::alternative)
+            return fmt::format("{} differs from {} drag: {}{}: not enough here", row.name, to_string(reference_drag), measured, extra);
+        if (r.in_scene) return fmt::format("{} matters: {}{}", row.name, measured, extra);
+        return fmt::format("{} is off but would change {}{}: turn it on", row.name, measured, extra);
+    }
     const std::string most = "(largest: " + describe_largest(r, tol) + ")";
-    const std::string chaotic = r.within_chaos ? "; " + chaos_words(r, chaos) : std::string();
     if (row.kind == TermKind::alternative)
-        return r.matters ? fmt::format("{} differs from {} drag: {}{}{}: not enough here", row.name, to_string(reference_drag),
-                                       beyond_list(r), chaotic, extra)
-                         : fmt::format("{} is within tolerance of {} drag {}{}: enough here", row.name,
-                                       to_string(reference_drag), most, extra);
-    if (r.in_scene)
-        return r.matters ? fmt::format("{} matters: {}{}{}", row.name, beyond_list(r), chaotic, extra)
-                         : fmt::format("{} changes nothing beyond tolerance {}{}: it could be turned off", row.name, most, extra);
-    return r.matters ? fmt::format("{} is off but would change {}{}{}: turn it on", row.name, beyond_list(r), chaotic, extra)
-                     : fmt::format("{} is off and would change nothing beyond tolerance {}{}", row.name, most, extra);
+        return fmt::format("{} is within tolerance of {} drag {}{}: enough here", row.name, to_string(reference_drag), most, extra);
+    if (r.in_scene) return fmt::format("{} changes nothing beyond tolerance {}{}: it could be turned off", row.name, most, extra);
+    return fmt::format("{} is off and would change nothing beyond tolerance {}{}", row.name, most, extra);
 }
 
-// What the runs measured, in words: the metrics beyond tolerance, or the largest within.
+// What the runs measured, in words: the metrics beyond tolerance (and the scene's chaos where
+// they are within it), or the largest within.
 std::string measured_words(const ModelRun& r, const ModelRun& chaos, const AdviceTolerances& tol) {
     if (r.within_chaos) return beyond_list(r) + "; " + chaos_words(r, chaos);
     if (r.matters) return beyond_list(r);
@@ -257,7 +258,7 @@ std::string measured_words(const ModelRun& r, const ModelRun& chaos, const Advic
 
 std::string row_verdict(const TermRow& row, const TermContext& c, const AdviceTolerances& tol) {
     if (row.own_verdict && c.run.not_applicable.empty()) return row.own_verdict(c);
-    return verdict(row, c.run, c.advice.chaos, row.note ? row.note(c) : std::string(), tol);
+    return verdict(row, c.run, c.measured, row.note ? row.note(c) : std::string(), tol);
 }
 
 std::size_t row_index(const char* name) {
