@@ -181,14 +181,13 @@ void run_bullet_pile(benchmark::State& state, std::size_t n, double from) {
     state.counters["contacts"] = static_cast<double>(peer.contacts()) / static_cast<double>(n);
 }
 
-// The pile as particle-lab has it at time `from`: positions, velocities and spins.
-std::vector<ParticleSpec> pile_at(std::size_t n, double from) {
-    const Gas g = pile(n);
+// The pile `g` as particle-lab has it at time `from`: positions, velocities and spins.
+std::vector<ParticleSpec> pile_at(const Gas& g, double from) {
     Simulation sim(g.model, g.particles);
     sim.run_until(from);
     std::vector<ParticleSpec> heaped = g.particles;
     const ParticleState& s = sim.state();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < heaped.size(); ++i) {
         heaped[i].position = s.position(i);
         heaped[i].velocity = s.velocity(i);
         heaped[i].spin = s.spin(i);
@@ -204,7 +203,7 @@ std::vector<ParticleSpec> pile_at(std::size_t n, double from) {
 // 100; from its own fall, 2.67 and 316 ms).
 void run_bullet_pile_from_ours(benchmark::State& state, std::size_t n, double from) {
     Gas g = pile(n);
-    g.particles = pile_at(n, from);
+    g.particles = pile_at(g, from);
     BulletPeer peer(peer_scene(g));
     peer.step(2);
     for (auto _ : state) peer.step(1);
