@@ -151,19 +151,26 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
     // Sleeping pairs stay where they are. The potential energy a move gives is contact work.
     // Concentric centres (two balls placed at one point) have no normal: they are opened "up",
     // against gravity (+y without it), b above a, as a ball put on top of another would rest.
+    // Where the solver propagated shock (very unequal masses, contact_shock.cpp) the pairs are
+    // taken from the lowest up, and a pair that carries weight moves its upper ball alone: split
+    // by inverse mass, a light ball between two heavy ones was pushed up by one pair and down by
+    // the next, and the heavy balls stayed sunk into it.
     const double g = glm::length(m.world.gravity);
     const Vec3 up = g > 0.0 ? -m.world.gravity / g : Vec3(0.0, 1.0, 0.0);
     const std::vector<std::uint8_t>& asleep = islands_.asleep();
     deep_overlaps_.clear();
-    for (const Pair& p : pairs_) {
-        if (asleep[p.a] && asleep[p.b]) continue;
+    const bool shock = solver_.propagated_shock();
+    auto open = [&](const Pair& p) {
+        if (asleep[p.a] && asleep[p.b]) return;
         const Vec3 d = s.position(p.b) - s.position(p.a);
         const double contact = s.radius[p.a] + s.radius[p.b];
         const double len = glm::length(d);
         const double overlap = contact - len - allowed_overlap * contact;
-        if (!(overlap > 0.0)) continue;
+        if (!(overlap > 0.0)) return;
         note_deep_overlap(p, contact, len);
-        const double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
+        double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
+        if (shock && len > 0.0 && std::abs(glm::dot(d, up)) >= ContactSolver::shock_least_rise * len)
+            (glm::dot(d, up) > 0.0 ? inv_a : inv_b) = 0.0;  // the lower ball holds still
         const double correction = std::min(correction_share * overlap, max_correction * contact);
         const Vec3 push = len > 0.0 ? (correction / (len * (inv_a + inv_b))) * d : (correction / (inv_a + inv_b)) * up;
         move_to(s, m, p.a, s.position(p.a) - inv_a * push);
@@ -173,6 +180,12 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
                 stamp_[i] = corrected;
                 corrected_.push_back(i);
             }
+    };
+    if (shock) {
+        order_bottom_up(s, up, pairs_, bottom_up_);
+        for (const auto& [height, k] : bottom_up_) open(pairs_[k]);
+    } else {
+        for (const Pair& p : pairs_) open(p);
     }
     for (const std::uint32_t i : corrected_) stamp_[i] = 0;
     corrected_.clear();

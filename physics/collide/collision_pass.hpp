@@ -76,6 +76,7 @@ public:
     bool moved(std::uint32_t i) const { return touched_[i] != 0; }  // i is in moved()
     const std::vector<Pair>& candidates() const { return pairs_; }
     const PairCache& pair_cache() const { return pair_cache_; }
+    bool propagated_shock() const { return solver_.propagated_shock(); }  // last step (contact_shock.cpp)
     const std::vector<SolverContact>& contacts() const { return solver_.contacts(); }
     const std::vector<std::uint8_t>& asleep() const { return islands_.asleep(); }
     // This step: the particles of a pile that fell asleep (SleepIslands::fell_asleep).
@@ -163,6 +164,7 @@ private:
     SleepIslands islands_;
     std::uint64_t resting_ = 0;
     std::vector<DeepOverlap> deep_overlaps_;
+    std::vector<std::pair<double, std::uint32_t>> bottom_up_;  // the overlap removal's order under shock
     std::vector<Event> wall_bounces_;
 };
 

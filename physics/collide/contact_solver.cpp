@@ -220,14 +220,20 @@ void ContactSolver::load_bodies(const ParticleState& s, const std::vector<std::u
     body_.resize(slot_particle_.size());
     v0_.resize(slot_particle_.size());
     w0_.resize(slot_particle_.size());
-    for_ranges(slot_particle_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+    // The least and largest mass of each task's bodies (shock propagation's first test).
+    task_masses_.assign(range_tasks(slot_particle_.size(), threads), {0.0, 0.0});
+    for_ranges(slot_particle_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
+        double least = std::numeric_limits<double>::infinity(), most = 0.0;
         for (std::size_t k = begin; k < end; ++k) {
             const std::uint32_t i = slot_particle_[k];
             slot_of_[i] = static_cast<std::uint32_t>(k);
             body_[k] = {s.velocity(i), s.spin(i), s.inertial_mass[i], s.radius[i], inverse_inertia(s, i)};
             v0_[k] = body_[k].v;
             w0_[k] = body_[k].w;
+            least = std::min(least, body_[k].mass);
+            most = std::max(most, body_[k].mass);
         }
+        task_masses_[task] = {least, most};
     });
     for_ranges(contacts_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t k = begin; k < end; ++k) {
@@ -351,6 +357,7 @@ void ContactSolver::for_each_coloured(std::size_t threads, Visit&& visit) {
 std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
                                    const std::vector<Vec3>& start_spin, const std::vector<std::uint32_t>& space_order,
                                    std::size_t threads) {
+    shocked_ = false;
     if (contacts_.empty()) return 0;
     const bool spin = spin_matters(m);
     load_bodies(s, space_order, threads);
@@ -359,6 +366,8 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
     order_by_colour(threads);
     for_each_coloured(threads, [&](const SolverContact& c) { apply(c, c.lambda_n * c.n + c.lambda_t, spin); });
     for (int it = 0; it < iterations; ++it) for_each_coloured(threads, [&](SolverContact& c) { solve_contact(c, spin); });
+    shocked_ = needs_shock(m);
+    if (shocked_) propagate_shock(s, m);
     // The impulses back, for the next warm start (each contact once: threaded, the same bits),
     // and the loaded contacts counted (the sleeping ones keep theirs).
     task_loaded_.assign(range_tasks(contacts_.size(), threads), 0);

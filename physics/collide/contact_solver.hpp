@@ -37,6 +37,7 @@
 #include "physics/stepping/particle_state.hpp"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pl::collide {
@@ -58,6 +59,11 @@ struct SolverContact {
     std::uint32_t body_a = 0, body_b = 0;  // the solver's body slots of a and b (active contacts)
     bool is_wall() const { return b == wall_contact; }
 };
+
+// The indices of `pairs` from the lowest lower ball up along `up` (then by index): the order in
+// which shock propagation takes them (contact_shock.cpp).
+void order_bottom_up(const ParticleState& s, const Vec3& up, const std::vector<Pair>& pairs,
+                     std::vector<std::pair<double, std::uint32_t>>& order);
 
 class ContactSolver {
 public:
@@ -87,6 +93,15 @@ public:
                         std::size_t threads = 1);
 
     const std::vector<SolverContact>& contacts() const { return contacts_; }
+    // The last solve ended with shock propagation (contact_shock.cpp): its contacts join masses
+    // more than shock_mass_ratio apart.
+    bool propagated_shock() const { return shocked_; }
+
+    // Shock propagation (contact_shock.cpp): the mass ratio past which it runs, and the least
+    // sine of a normal's slope for a contact to carry weight (side by side, nothing rests on
+    // the other).
+    static constexpr double shock_mass_ratio = 50.0;
+    static constexpr double shock_least_rise = 0.2;
 
 private:
     // A particle as the iterations see it: its velocity and spin and what the impulses need, in
@@ -114,6 +129,10 @@ private:
                    const std::vector<Vec3>& start_spin, bool spin, std::size_t threads);
     void colour_contacts();
     void order_by_colour(std::size_t threads);
+    // Shock propagation (contact_shock.cpp): whether the contacts join masses this unequal, and
+    // the pass from the lowest contact up with each lower ball fixed.
+    bool needs_shock(const Model& m) const;
+    void propagate_shock(const ParticleState& s, const Model& m);
     template <class Visit>
     void for_each_coloured(std::size_t threads, Visit&& visit);
 
@@ -134,6 +153,9 @@ private:
     std::vector<std::uint32_t> colour_start_, by_colour_, next_in_colour_, slot_start_, by_slot_;
     std::vector<SolverContact> coloured_;  // the active contacts in by_colour_ order, while solving
     std::vector<std::uint64_t> task_loaded_;  // loaded contacts, per task of the count
+    bool shocked_ = false;
+    std::vector<std::pair<double, double>> task_masses_;  // least and largest body mass, per task of load_bodies
+    std::vector<std::pair<double, std::uint32_t>> shock_order_;  // (height of the lower ball, coloured_ index)
     static constexpr std::uint32_t parallel_colour = 512;  // smaller colours run on one thread
     static constexpr std::size_t few_bodies_share = 4;     // bodies under 1/4 of the particles: index order
 };
