@@ -10,8 +10,8 @@
 #ifdef PL_HAS_BULLET
 #include "peers/bullet_peer.hpp"
 #endif
-#include "physics/model/emitter.hpp"
 #include "physics/stepping/simulation.hpp"
+#include "collision_scenes.hpp"
 #include "registry.hpp"
 
 #include <benchmark/benchmark.h>
@@ -23,33 +23,6 @@
 namespace pl::bench {
 
 namespace {
-
-struct Gas {
-    Model model;
-    std::vector<ParticleSpec> particles;
-};
-
-// The box holds 10,000 particles in 2 m x 2 m x 2 m at every n (the same density, so the same
-// collisions per particle-step: the cost per particle-step compares like with like).
-Gas dilute_gas(std::size_t n, bool collisions, double dt = 1e-3) {
-    Gas g;
-    const double side = 2.0 * std::cbrt(static_cast<double>(n) / 1e4);
-    g.model.room.size = {side, side, side};
-    g.model.world.gravity = {0.0, 0.0, 0.0};
-    g.model.contact = {1.0, 0.0, 0.0};
-    g.model.integrator.dt = dt;
-    g.model.collisions = {collisions, 1.0, 0.0};
-    Emitter e;
-    e.count = n;
-    e.seed = 5;
-    e.region_min = Vec3(-0.475 * side);
-    e.region_max = Vec3(0.475 * side);
-    e.speed_min = 0.5;
-    e.speed_max = 2.0;
-    e.radius_min = e.radius_max = 0.005;
-    g.particles = emit_particles(e, g.model.room);
-    return g;
-}
 
 // The pair cache's work, per step since the start: grid runs and mends, the largest margin and
 // the grid's cell and entries per box at its last run.
@@ -67,7 +40,7 @@ void count_cache_work(benchmark::State& state, const Simulation& sim) {
 }
 
 void run_gas(benchmark::State& state, std::size_t n, bool collisions, int threads = 1, double dt = 1e-3) {
-    const Gas g = dilute_gas(n, collisions, dt);
+    const CollisionScene g = dilute_gas(n, collisions, dt);
     Simulation sim(g.model, g.particles);
     sim.set_threads(threads);
     sim.step_n(10);  // the collision pass's buffers reach their size
@@ -83,7 +56,7 @@ void run_gas(benchmark::State& state, std::size_t n, bool collisions, int thread
 
 // The broad phase against the all-pairs loop on the gas's boxes (one step's motion).
 void run_pairs(benchmark::State& state, std::size_t n, bool grid) {
-    const Gas g = dilute_gas(n, true);
+    const CollisionScene g = dilute_gas(n, true);
     collide::SweptBoxes boxes;
     boxes.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -108,7 +81,7 @@ void run_pairs(benchmark::State& state, std::size_t n, bool grid) {
 
 #ifdef PL_HAS_BULLET
 // The same gas stepped by Bullet (peers/bullet_peer.hpp): same particles, room, dt, e and mu.
-PeerScene peer_scene(const Gas& g) {
+PeerScene peer_scene(const CollisionScene& g) {
     PeerScene scene;
     scene.room = g.model.room;
     scene.gravity = g.model.world.gravity;
@@ -129,34 +102,9 @@ void run_bullet_gas(benchmark::State& state, std::size_t n) {
 }
 #endif
 
-// n balls of 2 cm, 30 g dropped from up to 1.5 m onto a floor that holds about n / 10 of them
-// side by side; e = 0.5, mu = 0.5 for walls and pairs. The balls and coefficients are those of
-// collision_pile_test's pile (tests/test_scenes.hpp), the room is not: here a fixed 2 m height
-// and a floor that grows with n, so every size settles about ten layers deep.
-Gas pile(std::size_t n) {
-    Gas g;
-    const double side = 0.04 * std::sqrt(static_cast<double>(n) / 10.0);
-    g.model.room.center = {0.0, 1.0, 0.0};
-    g.model.room.size = {side, 2.0, side};
-    g.model.contact = {0.5, 0.5, 0.05};
-    g.model.integrator.dt = 0.002;
-    g.model.collisions = {true, 0.5, 0.5};
-    Emitter e;
-    e.count = n;
-    e.seed = 1;
-    e.region_min = {-side / 2 + 0.02, 0.1, -side / 2 + 0.02};
-    e.region_max = {side / 2 - 0.02, 1.5, side / 2 - 0.02};
-    e.speed_min = 0.0;
-    e.speed_max = 0.5;
-    e.radius_min = e.radius_max = 0.02;
-    e.mass_min = e.mass_max = 0.03;
-    g.particles = emit_particles(e, g.model.room);
-    return g;
-}
-
 // Steps of the pile from time `from` on (0.7 s: fallen and heaped, awake; 3 s: asleep).
 void run_pile(benchmark::State& state, std::size_t n, double from, int threads = 1) {
-    const Gas g = pile(n);
+    const CollisionScene g = pile(n);
     Simulation sim(g.model, g.particles);
     sim.set_threads(threads);
     sim.run_until(from);
@@ -172,7 +120,7 @@ void run_pile(benchmark::State& state, std::size_t n, double from, int threads =
 // The same pile stepped by Bullet from the same time on (Bullet deactivates still bodies, as
 // particle-lab's islands sleep).
 void run_bullet_pile(benchmark::State& state, std::size_t n, double from) {
-    const Gas g = pile(n);
+    const CollisionScene g = pile(n);
     BulletPeer peer(peer_scene(g));
     peer.step(static_cast<int>(std::lround(from / g.model.integrator.dt)));
     for (auto _ : state) peer.step(1);
@@ -182,7 +130,7 @@ void run_bullet_pile(benchmark::State& state, std::size_t n, double from) {
 }
 
 // The pile `g` as particle-lab has it at time `from`: positions, velocities and spins.
-std::vector<ParticleSpec> pile_at(const Gas& g, double from) {
+std::vector<ParticleSpec> pile_at(const CollisionScene& g, double from) {
     Simulation sim(g.model, g.particles);
     sim.run_until(from);
     std::vector<ParticleSpec> heaped = g.particles;
@@ -202,7 +150,7 @@ std::vector<ParticleSpec> pile_at(const Gas& g, double from) {
 // it does (at 1e4: 1.83 contacts a ball and 155 ms a step after 2 steps, 2.44 and 212 ms after
 // 100; from its own fall, 2.67 and 316 ms).
 void run_bullet_pile_from_ours(benchmark::State& state, std::size_t n, double from) {
-    Gas g = pile(n);
+    CollisionScene g = pile(n);
     g.particles = pile_at(g, from);
     BulletPeer peer(peer_scene(g));
     peer.step(2);

@@ -355,6 +355,7 @@ int main(int argc, char** argv) {
     register_method_benchmarks();
     register_accuracy_benchmarks();
     register_collision_benchmarks();
+    register_collision_paired_benchmarks();
     CollectingReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     const int all_threads = pl::hardware_threads();

@@ -17,6 +17,7 @@ void register_paired_benchmarks();      // paired_bench.cpp
 std::string paired_name(int steps, std::size_t n, int threads);
 void register_accuracy_benchmarks();    // accuracy_bench.cpp
 void register_collision_benchmarks();   // collision_bench.cpp
+void register_collision_paired_benchmarks();  // collision_paired.cpp
 
 // Counter every throughput benchmark reports (a rate: particle-steps per second).
 constexpr const char* rate_counter = "particle_steps/s";
