@@ -16,7 +16,8 @@
 // impulses in the contacts' accumulated ones (the next step's warm start gives the lower balls
 // their reaction). It runs on one thread in a fixed order (the same bits on any number of
 // threads), and only in a scene that needs it: contacts whose masses differ by more than
-// `shock_mass_ratio` (equal balls converge without it, and keep their bits).
+// `shock_mass_ratio`. Below it the iterations alone hold a column of eight alternating masses
+// under 1% of a radius (0.8% at 1 : 49), and equal balls keep their bits.
 #include "physics/collide/contact_solver.hpp"
 
 #include <algorithm>
