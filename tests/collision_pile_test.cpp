@@ -17,6 +17,7 @@
 namespace pl {
 namespace {
 
+using test::deepest_overlap;
 using test::pile;
 using test::Pile;
 
@@ -24,17 +25,6 @@ double kinetic(const ParticleState& s) {
     double e = 0.0;
     for (std::size_t i = 0; i < s.size(); ++i) e += kinetic_energy(s.mass[i], s.velocity(i));
     return e;
-}
-
-// The deepest overlap of any pair, as a share of the smaller radius (all pairs: the reference).
-double deepest_overlap(const ParticleState& s) {
-    double worst = 0.0;
-    for (std::size_t i = 0; i < s.size(); ++i)
-        for (std::size_t j = i + 1; j < s.size(); ++j) {
-            const double gap = glm::length(s.position(j) - s.position(i)) - s.radius[i] - s.radius[j];
-            worst = std::max(worst, -gap / std::min(s.radius[i], s.radius[j]));
-        }
-    return worst;
 }
 
 std::vector<Vec3> positions(const ParticleState& s) {

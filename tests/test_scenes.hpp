@@ -4,6 +4,9 @@
 #include "physics/model/emitter.hpp"
 #include "physics/stepping/simulation.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -85,6 +88,17 @@ inline Pile pile(std::size_t n, double side, double height, std::uint64_t seed =
     e.mass_min = e.mass_max = 0.03;
     p.particles = emit_particles(e, p.model.room);
     return p;
+}
+
+// The deepest overlap of any pair, as a share of the smaller radius (all pairs: the reference).
+inline double deepest_overlap(const ParticleState& s) {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        for (std::size_t j = i + 1; j < s.size(); ++j) {
+            const double gap = glm::length(s.position(j) - s.position(i)) - s.radius[i] - s.radius[j];
+            worst = std::max(worst, -gap / std::min(s.radius[i], s.radius[j]));
+        }
+    return worst;
 }
 
 inline std::vector<Event> of_kind(const std::vector<Event>& events, EventKind kind) {

@@ -169,7 +169,7 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
         if (!(overlap > 0.0)) return;
         note_deep_overlap(p, contact, len);
         double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
-        if (shock && len > 0.0 && std::abs(glm::dot(d, up)) >= ContactSolver::shock_least_rise * len)
+        if (shock && len > 0.0 && carries_weight(d, up, len, ContactSolver::shock_least_rise))
             (glm::dot(d, up) > 0.0 ? inv_a : inv_b) = 0.0;  // the lower ball holds still
         const double correction = std::min(correction_share * overlap, max_correction * contact);
         const Vec3 push = len > 0.0 ? (correction / (len * (inv_a + inv_b))) * d : (correction / (inv_a + inv_b)) * up;
@@ -182,7 +182,7 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
             }
     };
     if (shock) {
-        order_bottom_up(s, up, pairs_, bottom_up_);
+        order_bottom_up(s, up, pairs_, [](const Pair&) { return true; }, bottom_up_);
         for (const auto& [height, k] : bottom_up_) open(pairs_[k]);
     } else {
         for (const Pair& p : pairs_) open(p);

@@ -47,14 +47,10 @@ void ContactSolver::propagate_shock(const ParticleState& s, const Model& m) {
     const Vec3 up = -glm::normalize(m.world.gravity);
     // The contacts that carry weight, by the height of their lower ball (then their place: a
     // fixed order).
-    shock_order_.clear();
-    for (std::uint32_t k = 0; k < coloured_.size(); ++k) {
-        const SolverContact& c = coloured_[k];
-        if (c.is_wall() || std::abs(glm::dot(c.n, up)) < shock_least_rise) continue;
-        const double lower = std::min(glm::dot(s.position(c.a), up), glm::dot(s.position(c.b), up));
-        shock_order_.push_back({lower, k});
-    }
-    std::sort(shock_order_.begin(), shock_order_.end());
+    order_bottom_up(
+        s, up, coloured_,
+        [&](const SolverContact& c) { return !c.is_wall() && carries_weight(c.n, up, 1.0, shock_least_rise); },
+        shock_order_);
     for (const auto& [height, k] : shock_order_) {
         SolverContact& c = coloured_[k];
         // n runs from a to b: b is the upper ball when n rises.
@@ -68,14 +64,6 @@ void ContactSolver::propagate_shock(const ParticleState& s, const Model& m) {
         upper.v += (b_upper ? impulse : -impulse) / upper.mass * c.n;
         c.lambda_n += impulse;
     }
-}
-
-void order_bottom_up(const ParticleState& s, const Vec3& up, const std::vector<Pair>& pairs,
-                     std::vector<std::pair<double, std::uint32_t>>& order) {
-    order.clear();
-    for (std::uint32_t k = 0; k < pairs.size(); ++k)
-        order.push_back({std::min(glm::dot(s.position(pairs[k].a), up), glm::dot(s.position(pairs[k].b), up)), k});
-    std::sort(order.begin(), order.end());
 }
 
 }  // namespace pl::collide

@@ -36,6 +36,10 @@
 #include "physics/model/scene.hpp"
 #include "physics/stepping/particle_state.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -60,10 +64,22 @@ struct SolverContact {
     bool is_wall() const { return b == wall_contact; }
 };
 
-// The indices of `pairs` from the lowest lower ball up along `up` (then by index): the order in
-// which shock propagation takes them (contact_shock.cpp).
-void order_bottom_up(const ParticleState& s, const Vec3& up, const std::vector<Pair>& pairs,
-                     std::vector<std::pair<double, std::uint32_t>>& order);
+// Shock propagation (contact_shock.cpp) and the overlap removal under it: whether a contact along
+// d (of length `length`) carries weight, its slope's sine at least `least_rise` (side by side,
+// nothing rests on the other); and the indices of `items` (each with particles a and b) that
+// `keep` takes, from the lowest lower ball up along `up` (then by index).
+inline bool carries_weight(const Vec3& d, const Vec3& up, double length, double least_rise) {
+    return std::abs(glm::dot(d, up)) >= least_rise * length;
+}
+template <class Item, class Keep>
+void order_bottom_up(const ParticleState& s, const Vec3& up, const std::vector<Item>& items, Keep&& keep,
+                     std::vector<std::pair<double, std::uint32_t>>& order) {
+    order.clear();
+    for (std::uint32_t k = 0; k < items.size(); ++k)
+        if (keep(items[k]))
+            order.push_back({std::min(glm::dot(s.position(items[k].a), up), glm::dot(s.position(items[k].b), up)), k});
+    std::sort(order.begin(), order.end());
+}
 
 class ContactSolver {
 public:
