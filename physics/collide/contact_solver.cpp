@@ -406,6 +406,7 @@ void ContactSolver::hand_back(ParticleState& s, const Model& m, double h, const 
     // Either way a contact at rest (v0 = v1 = 0) does no work: a still pile books nothing.
     const double push = constant_push_share(m.integrator.method) * h;
     const bool exact = exact_under_constant_force(m.integrator.method);
+    const bool from_start = reads_start_velocities(s, m);  // !exact where work is booked
     // Each body writes only its own particle: threaded, the same bits.
     for_ranges(slot_particle_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t k = begin; k < end; ++k) {
@@ -416,11 +417,11 @@ void ContactSolver::hand_back(ParticleState& s, const Model& m, double h, const 
             s.set_position(i, s.position(i) + push * dv);
             if (s.collision_work.empty()) continue;
             const double mi = s.inertial_mass[i], moment = s.moment(i);
-            const Vec3 v_from = exact ? v0_[k] : start_velocity[i];
+            const Vec3 v_from = from_start ? start_velocity[i] : v0_[k];
             double work = mi * glm::dot(dv, 0.5 * (v_from + s.velocity(i)));
             if (exact) work -= s.mass[i] * glm::dot(m.world.gravity, push * dv);
             // Without spin dw = 0 and start_spin is not kept (the term is zero).
-            if (spin) work += moment * glm::dot(dw, 0.5 * ((exact ? w0_[k] : start_spin[i]) + s.spin(i)));
+            if (spin) work += moment * glm::dot(dw, 0.5 * ((from_start ? start_spin[i] : w0_[k]) + s.spin(i)));
             s.collision_work[i] += work;
         }
     });

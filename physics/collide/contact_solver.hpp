@@ -107,6 +107,11 @@ public:
     std::uint64_t solve(ParticleState& s, const Model& m, double h, const std::vector<Vec3>& start_velocity,
                         const std::vector<Vec3>& start_spin, const std::vector<std::uint32_t>& space_order,
                         std::size_t threads = 1);
+    // Whether solve reads `start_velocity` (and, with spin, `start_spin`): only to book the work
+    // of a ledger on the Euler methods (hand_back); else they may hold anything.
+    static bool reads_start_velocities(const ParticleState& s, const Model& m) {
+        return !s.collision_work.empty() && !exact_under_constant_force(m.integrator.method);
+    }
 
     const std::vector<SolverContact>& contacts() const { return contacts_; }
     // The last solve ended with shock propagation (contact_shock.cpp): its contacts join masses
