@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace pl::collide {
@@ -121,6 +122,36 @@ TEST(BroadPhase, SameOnTwoThreadsAndAsTheCellAdapts) {
         if (side > 1.0) EXPECT_GT(cells.back(), 2.0 * cells.front()) << "a dilute gas gets coarser cells";
         else EXPECT_LE(cells.back(), cells.front()) << "a dense crowd keeps fine cells";
         EXPECT_LT(serial.entry_count(), 8 * boxes.ids.size());
+    }
+}
+
+TEST(BroadPhase, ManyCellsSortedInOnePassOnTwoThreads) {
+    // 40,000 boxes over about 45^3 cells on the first call: the counting sort takes one pass,
+    // its digit the whole cell, and over 65,536 cells the places of the cells' entries are
+    // summed in chunks on the threads. The same pairs as on one thread, and near() (which reads
+    // the cells' starts) finds every box a query meets.
+    const SweptBoxes boxes = random_boxes(40000, 1.8, 0.008, 0.008, 0.004, 21);
+    BroadPhase serial, threaded;
+    std::vector<Pair> one, two;
+    serial.find_pairs(boxes, one, nullptr, 1);
+    threaded.find_pairs(boxes, two, nullptr, 2);
+    const double cells = std::pow(1.8 / threaded.cell_size(), 3);
+    ASSERT_GT(cells, 65536.0) << "the sort's digits must be many for the chunks to run";
+    ASSERT_LT(cells, 131072.0) << "and fit one pass";
+    EXPECT_EQ(one, two);
+    EXPECT_GT(two.size(), 1000u);
+    std::mt19937 rng(22);
+    std::uniform_int_distribution<std::uint32_t> pick(0, 39999);
+    for (int query = 0; query < 200; ++query) {
+        const std::uint32_t i = pick(rng);
+        std::vector<std::uint32_t> near;
+        ASSERT_TRUE(threaded.near(boxes.box[i], near));
+        std::sort(near.begin(), near.end());
+        for (const Pair& p : two) {
+            if (p.a != i && p.b != i) continue;
+            EXPECT_TRUE(std::binary_search(near.begin(), near.end(), p.a == i ? p.b : p.a)) << "pair " << p.a << ", " << p.b;
+        }
+        EXPECT_TRUE(std::binary_search(near.begin(), near.end(), i)) << "a box meets itself";
     }
 }
 

@@ -163,6 +163,7 @@ private:
     void enter_boxes(const SweptBoxes& boxes, const std::uint8_t* asleep, std::size_t begin, std::size_t end, Part& part);
     void radix_sort(std::size_t tasks);
     void radix_pass(const std::vector<Source>& sources, Entry* out, int shift, std::uint32_t mask, bool counted);
+    void place_digits(std::size_t tasks, std::size_t digits, bool whole_cell);
     std::size_t scan_cells(std::size_t begin, std::size_t end, std::vector<Pair>& pairs,
                            std::vector<std::uint32_t>& homes) const;
     void keep_exact(std::vector<Pair>& pairs, std::size_t from) const;
@@ -195,6 +196,7 @@ private:
     std::vector<Source> sources_;           // of the radix sort's pass
     std::vector<Entry> entries_, spare_;    // sorted by cell
     std::vector<std::uint32_t> cell_start_;  // each cell's first entry, when the sort took one pass
+    std::vector<std::uint32_t> chunk_start_;  // place_digits: each chunk of digits' first entry
     std::vector<std::size_t> slice_start_;  // slice boundaries (at cell boundaries), when threaded
     std::vector<std::size_t> slice_cells_;
     std::vector<std::vector<Pair>> slice_pairs_;  // per slice, when threaded
