@@ -15,9 +15,9 @@ bool PairCache::find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep
     const std::size_t m = boxes.ids.size();
     begin_checks(range_tasks(m, threads));
     for_ranges(m, threads, [&](std::size_t begin, std::size_t end, std::size_t task) {
-        for (std::size_t n = begin; n < end && task_holds_[task]; ++n) {
+        for (std::size_t n = begin; n < end && task_watch_[task].holds; ++n) {
             const std::uint32_t i = boxes.ids[n];
-            if (i != fat_.ids[n]) task_holds_[task] = 0;
+            if (i != fat_.ids[n]) task_watch_[task].holds = false;
             else check(task, i, boxes.box[i], asleep && asleep[i]);
         }
     });
@@ -26,17 +26,19 @@ bool PairCache::find_leavers(const SweptBoxes& boxes, const std::uint8_t* asleep
 
 bool PairCache::join_leavers() {
     leavers_.clear();
-    for (std::size_t t = 0; t < task_holds_.size(); ++t) {
-        if (!task_holds_[t]) return false;
-        leavers_.insert(leavers_.end(), task_leavers_[t].begin(), task_leavers_[t].end());
+    for (const TaskWatch& watch : task_watch_) {
+        if (!watch.holds) return false;
+        leavers_.insert(leavers_.end(), watch.leavers.begin(), watch.leavers.end());
     }
     return true;
 }
 
 void PairCache::begin_checks(std::size_t tasks) {
-    task_holds_.assign(tasks, 1);
-    task_leavers_.resize(tasks);
-    for (std::vector<std::uint32_t>& leavers : task_leavers_) leavers.clear();
+    task_watch_.resize(tasks);
+    for (TaskWatch& watch : task_watch_) {
+        watch.leavers.clear();
+        watch.holds = true;
+    }
 }
 
 bool PairCache::watch(std::size_t tasks, std::size_t particles) {

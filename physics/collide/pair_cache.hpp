@@ -64,10 +64,11 @@ public:
     bool watch(std::size_t tasks, std::size_t particles);
     void check(std::size_t task, std::uint32_t i, const SweptBox& b, bool asleep) {
         const SweptBox& f = fat_.box[i];
-        if (slept_[i] && !asleep) task_holds_[task] = 0;  // woke: the grid left out its pairs with sleepers
+        TaskWatch& watch = task_watch_[task];
+        if (slept_[i] && !asleep) watch.holds = false;  // woke: the grid left out its pairs with sleepers
         if (!(b.lo[0] >= f.lo[0] && b.lo[1] >= f.lo[1] && b.lo[2] >= f.lo[2] && b.hi[0] <= f.hi[0] &&
               b.hi[1] <= f.hi[1] && b.hi[2] <= f.hi[2]))
-            task_leavers_[task].push_back(i);
+            watch.leavers.push_back(i);
     }
     void find_pairs_watched(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
                             std::size_t threads, bool ids_same);
@@ -99,9 +100,14 @@ private:
     std::vector<std::uint8_t> slept_;  // per particle index: asleep at the last run
     std::vector<Pair> fat_pairs_;      // overlapping pairs of fat boxes, sorted
     std::vector<std::vector<Pair>> slice_pairs_;
-    std::vector<std::uint8_t> task_holds_;
+    // One task's part of the watch, on cache lines of its own: the tasks write theirs at once
+    // (side by side, every push to one task's leavers moved the line under the other's).
+    struct alignas(64) TaskWatch {
+        std::vector<std::uint32_t> leavers;
+        bool holds = true;
+    };
+    std::vector<TaskWatch> task_watch_;
     std::vector<double> task_margin_;
-    std::vector<std::vector<std::uint32_t>> task_leavers_;
     std::vector<std::uint32_t> leavers_;  // boxes out of their fat boxes, this call, by index
     // Mending: the boxes mended since the grid ran (their entries in the grid are stale), a flag
     // per particle index for them and for this call's leavers, the particles a leaver's query
