@@ -145,7 +145,7 @@ private:
                int(a.lo[2] > b.hi[2]) | int(b.lo[2] > a.hi[2]);
     }
     // One thread's share of the particles: the entries it made and the big ones it found.
-    struct Part {
+    struct alignas(64) Part {  // a cache line of its own: the tasks fill theirs at once
         std::vector<Entry> entries;  // the first `fill` of them made by the last call
         std::size_t fill = 0;
         std::vector<std::uint32_t> big;

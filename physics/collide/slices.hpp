@@ -33,8 +33,14 @@ void append_in_slices(std::size_t count, std::size_t threads, std::size_t grain,
     if (slices == 1) return scan(std::size_t{0}, count, out);
     buffers.resize(slices);
     auto task = [&](std::size_t k) {
-        buffers[k].clear();
-        scan(count * k / slices, count * (k + 1) / slices, buffers[k]);
+        // Filled through a vector of the task's own (its capacity swapped in and back): the
+        // buffers' headers lie side by side, and a push into one moved the cache line under the
+        // thread pushing into its neighbour.
+        std::vector<T> own;
+        own.swap(buffers[k]);
+        own.clear();
+        scan(count * k / slices, count * (k + 1) / slices, own);
+        own.swap(buffers[k]);
     };
     ThreadPool::shared().run(slices, threads, task);
     for (const std::vector<T>& buffer : buffers) out.insert(out.end(), buffer.begin(), buffer.end());
