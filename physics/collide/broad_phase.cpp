@@ -222,10 +222,11 @@ void BroadPhase::radix_pass(const std::vector<Source>& sources, Entry* out, int 
 void BroadPhase::place_digits(std::size_t tasks, std::size_t digits, bool whole_cell) {
     // Each source's count of each digit becomes the place of its first entry: digit 0's entries
     // first (source 0's, then source 1's...), then digit 1's. The sums run in chunks of digits on
-    // the threads when the digits are many (a one-pass sort's digit is the whole cell: 2^18 of
-    // them in a gas of 1e5, a serial loop that took a tenth of the main thread's own work in a
-    // grid run): each chunk's total, their running sum, then each chunk's places from its start.
-    const std::size_t chunks = tasks > 1 && digits >= 65536 ? 4 * tasks : 1;
+    // the threads when the digits are many (a one-pass sort's digit is the whole cell: 2^15 of
+    // them in a gas of 1e4, 2^18 at 1e5, a serial loop that took a tenth of the main thread's own
+    // work in a grid run): each chunk's total, their running sum, then each chunk's places from
+    // its start.
+    const std::size_t chunks = tasks > 1 && digits >= 8192 ? 4 * tasks : 1;
     chunk_start_.assign(chunks + 1, 0);
     auto digits_of = [&](std::size_t k) { return std::pair{digits * k / chunks, digits * (k + 1) / chunks}; };
     run(chunks, [&](std::size_t k) {
