@@ -321,18 +321,12 @@ std::size_t BroadPhase::scan(std::vector<Pair>& pairs, std::size_t threads) {
     slice_homes_.resize(slices);
     slice_cells_.assign(slices, 0);
     run(slices, [&](std::size_t k) {
-        // Through vectors of the task's own, as append_in_slices does (slices.hpp): pushes into
-        // neighbouring headers share a cache line.
-        std::vector<Pair> found;
-        std::vector<std::uint32_t> homes;
-        found.swap(slice_pairs_[k]);
-        homes.swap(slice_homes_[k]);
-        found.clear();
-        homes.clear();
-        const std::size_t cells = scan_cells(slice_start_[k], std::max(slice_start_[k], slice_start_[k + 1]), found, homes);
-        found.swap(slice_pairs_[k]);
-        homes.swap(slice_homes_[k]);
-        slice_cells_[k] = cells;
+        const std::size_t begin = slice_start_[k], end = std::max(begin, slice_start_[k + 1]);
+        slice_cells_[k] = fill_privately(slice_pairs_[k], [&](std::vector<Pair>& found) {
+            return fill_privately(slice_homes_[k], [&](std::vector<std::uint32_t>& homes) {
+                return scan_cells(begin, end, found, homes);
+            });
+        });
     });
     std::size_t cells = 0, found = 0;
     for (std::size_t k = 0; k < slices; ++k) {

@@ -23,6 +23,23 @@ void for_ranges(std::size_t n, std::size_t threads, Body&& body) {
     ThreadPool::shared().run(tasks, threads, task);
 }
 
+// Returns fill(own), where `own` is an empty vector holding `buffer`'s storage (swapped in, and
+// back into `buffer` after): a task that fills one of several buffers whose headers lie side by
+// side in memory pushes into a header of its own, where pushes into neighbouring headers moved
+// their shared cache line between the cores at every push.
+template <class T, class Fill>
+decltype(auto) fill_privately(std::vector<T>& buffer, Fill&& fill) {
+    std::vector<T> own;
+    own.swap(buffer);
+    own.clear();
+    struct SwapBack {
+        std::vector<T>& own;
+        std::vector<T>& buffer;
+        ~SwapBack() { own.swap(buffer); }
+    } back{own, buffer};
+    return fill(own);
+}
+
 // Appends to `out` what scan(begin, end, buffer) appends over [0, count): in one go on one
 // thread or below `grain` items, else in 4 slices per thread, each into its own buffer of
 // `buffers`, joined in order (the same items in the same order on any number of threads).
@@ -33,14 +50,7 @@ void append_in_slices(std::size_t count, std::size_t threads, std::size_t grain,
     if (slices == 1) return scan(std::size_t{0}, count, out);
     buffers.resize(slices);
     auto task = [&](std::size_t k) {
-        // Filled through a vector of the task's own (its capacity swapped in and back): the
-        // buffers' headers lie side by side, and a push into one moved the cache line under the
-        // thread pushing into its neighbour.
-        std::vector<T> own;
-        own.swap(buffers[k]);
-        own.clear();
-        scan(count * k / slices, count * (k + 1) / slices, own);
-        own.swap(buffers[k]);
+        fill_privately(buffers[k], [&](std::vector<T>& own) { scan(count * k / slices, count * (k + 1) / slices, own); });
     };
     ThreadPool::shared().run(slices, threads, task);
     for (const std::vector<T>& buffer : buffers) out.insert(out.end(), buffer.begin(), buffer.end());
