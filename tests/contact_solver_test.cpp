@@ -42,7 +42,7 @@ Solved solve_with(const Simulation& sim, const std::vector<std::uint32_t>& space
     }
     const double h = sim.model().integrator.dt;
     collide::ContactSolver solver;
-    solver.gather(s, sim.model(), pass.candidates(), {}, pass.asleep(), h, collide::CollisionPass::impact_speed(sim.model(), h),
+    solver.gather(s, sim.model(), pass.candidates(), {}, {}, pass.asleep(), h, collide::CollisionPass::impact_speed(sim.model(), h),
                   threads);
     solver.solve(s, sim.model(), h, start_velocity, start_spin, space_order, threads);
     out.contacts = solver.contacts();

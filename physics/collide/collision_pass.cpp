@@ -22,6 +22,15 @@ void move_to(ParticleState& s, const Model& m, std::uint32_t i, const Vec3& x) {
     s.set_position(i, x);
 }
 
+// Moves particle i by `by`, kept inside the room; returns how far it went along `by`.
+double shift_inside(ParticleState& s, const Model& m, const RoomBounds& room, std::uint32_t i, const Vec3& by) {
+    const double wanted = glm::length(by);
+    if (!(wanted > 0.0)) return 0.0;
+    const Vec3 from = s.position(i);
+    move_to(s, m, i, room.clamp_inside(from + by, s.radius[i]));
+    return glm::dot(s.position(i) - from, by) / wanted;
+}
+
 }  // namespace
 
 CollisionPass::CollisionPass(std::size_t particles)
@@ -155,14 +164,16 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
     // Concentric centres (two balls placed at one point) have no normal: they are opened "up",
     // against gravity (+y without it), b above a, as a ball put on top of another would rest.
     // Where the solver propagated shock (very unequal masses, contact_shock.cpp) the pairs are
-    // taken from the lowest up, and a pair that carries weight moves its upper ball alone: split
+    // taken from the lowest up, and a pair that carries weight moves its upper ball alone (split
     // by inverse mass, a light ball between two heavy ones was pushed up by one pair and down by
-    // the next, and the heavy balls stayed sunk into it.
+    // the next, and the heavy balls stayed sunk into it); any other pair whose one ball is nearer
+    // a wall it is pressed into (the solver's anchor levels) moves the other ball alone.
     const double g = glm::length(m.world.gravity);
     const Vec3 up = g > 0.0 ? -m.world.gravity / g : Vec3(0.0, 1.0, 0.0);
     const std::vector<std::uint8_t>& asleep = islands_.asleep();
     deep_overlaps_.clear();
     const bool shock = solver_.propagated_shock();
+    const RoomBounds room(m.room);
     auto open = [&](const Pair& p) {
         if (asleep[p.a] && asleep[p.b]) return;
         const Vec3 d = s.position(p.b) - s.position(p.a);
@@ -172,12 +183,24 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
         if (!(overlap > 0.0)) return;
         note_deep_overlap(p, contact, len);
         double inv_a = 1.0 / s.inertial_mass[p.a], inv_b = 1.0 / s.inertial_mass[p.b];
-        if (shock && len > 0.0 && carries_weight(d, up, len, ContactSolver::shock_least_rise))
-            (glm::dot(d, up) > 0.0 ? inv_a : inv_b) = 0.0;  // the lower ball holds still
+        if (shock && len > 0.0) {
+            if (g > 0.0 && carries_weight(d, up, len, ContactSolver::shock_least_rise)) {
+                (glm::dot(d, up) > 0.0 ? inv_a : inv_b) = 0.0;  // the lower ball holds still
+            } else {
+                // The ball nearer the wall it is pressed into holds still (contact_shock.cpp).
+                const std::uint32_t level_a = solver_.anchor_level(p.a), level_b = solver_.anchor_level(p.b);
+                if (level_a != level_b) (level_a < level_b ? inv_a : inv_b) = 0.0;
+            }
+        }
         const double correction = std::min(correction_share * overlap, max_correction * contact);
-        const Vec3 push = len > 0.0 ? (correction / (len * (inv_a + inv_b))) * d : (correction / (inv_a + inv_b)) * up;
-        move_to(s, m, p.a, s.position(p.a) - inv_a * push);
-        move_to(s, m, p.b, s.position(p.b) + inv_b * push);
+        const Vec3 along = len > 0.0 ? d / len : up;  // from a to b
+        // Each ball its share, kept inside the room; what a wall keeps one ball from taking the
+        // other takes (a light ball against a wall: the heavy ball behind it is moved back,
+        // where the light ball's share was lost to the wall and the overlap grew step by step).
+        const double share_a = correction * inv_a / (inv_a + inv_b);
+        const double taken_a = shift_inside(s, m, room, p.a, -share_a * along);
+        const double taken_b = shift_inside(s, m, room, p.b, (correction - taken_a) * along);
+        if (taken_a + taken_b < correction) shift_inside(s, m, room, p.a, -(correction - taken_a - taken_b) * along);
         for (const std::uint32_t i : {p.a, p.b})
             if (stamp_[i] != corrected) {
                 stamp_[i] = corrected;
@@ -195,11 +218,13 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
 }
 
 void CollisionPass::note_deep_overlap(const Pair& p, double contact, double distance) {
-    // Only the step's own motion counts: a pair apart at its start, neither of whose balls this
-    // removal has moved yet (opening a crowd pushes balls into their neighbours for a step).
+    // Only the step's own motion counts: a pair the step drove in from less than half the limit
+    // (apart at its start, or touching and driven in by a ball behind it), neither of whose balls
+    // this removal has moved yet (opening a crowd pushes balls into their neighbours for a step);
+    // never an emitter's overlaps, deep from the start, being opened.
     const double share = (contact - distance) / contact;
     if (share > warn_overlap && stamp_[p.a] != corrected && stamp_[p.b] != corrected &&
-        glm::distance(start_[p.a], start_[p.b]) >= (1.0 - allowed_overlap) * contact)
+        glm::distance(start_[p.a], start_[p.b]) > (1.0 - 0.5 * warn_overlap) * contact)
         deep_overlaps_.push_back({p.a, p.b, share});
 }
 
@@ -354,6 +379,9 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
         find_wall_hits(s, m, h, impact);
         queue_hits(from);
     }
+    caught_.clear();
+    for (const std::uint32_t i : moved_)
+        if (strikes_[i] >= max_strikes) caught_.push_back(i);
     for (const std::uint32_t i : moved_) strikes_[i] = 0;  // only struck particles carry strikes
     const RoomBounds room(m.room);
     for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(at(i, h), s.radius[i]));
@@ -377,9 +405,10 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     }
     list_pair_particles();
     const double impact = impact_speed(m, h);
+    caught_.clear();
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, impact, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
-    solver_.gather(s, m, pairs_, moved_, asleep, h, impact, threads);
+    solver_.gather(s, m, pairs_, moved_, caught_, asleep, h, impact, threads);
     resting_ = solver_.solve(s, m, h, start_velocity_, start_spin_, pair_cache_.grid().order(), threads);
     for (const SolverContact& c : solver_.contacts()) {
         if (!c.active) continue;
@@ -387,8 +416,12 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
         if (!c.is_wall()) touch(c.b);
     }
     keep_rest_on_walls(s, impact);
-    remove_overlaps(s, m);
+    // The solver may have moved a ball into a wall (it never pushes one away: a ball moving off a
+    // wall and stopped by a heavy one behind it ends past the wall): back inside before the
+    // overlaps are measured, so that the ball behind it is the one moved back.
     const RoomBounds room(m.room);
+    for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+    remove_overlaps(s, m);
     for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
     // Each paired particle once (pair_particles_ lists each once): threaded, the same bits.
     for_ranges(pair_particles_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {

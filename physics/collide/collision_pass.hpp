@@ -47,10 +47,11 @@ public:
     static constexpr double correction_share = 0.8;
     static constexpr double max_correction = 0.2;
     static constexpr double allowed_overlap = 1e-4;
-    // A pair apart at the step's start that the step left overlapping deeper than this share of
-    // its contact distance is reported (deep_overlaps()): a meeting the pass could not follow (a
-    // ball that struck a wall and another ball in one step, whose path was not straight); never a
-    // settling pile (below 1%) or an emitter's overlaps being opened (there from the start).
+    // A pair the step drove past this share of its contact distance, from less than half of it,
+    // is reported (deep_overlaps()): a meeting the pass could not follow (a ball that struck a
+    // wall and another ball in one step, whose path was not straight; a light ball a heavy one
+    // drove into a wall faster than the solver could stop it); never a settling pile (below 1%)
+    // or an emitter's overlaps being opened (deep from the start).
     static constexpr double warn_overlap = 0.1;
 
     explicit CollisionPass(std::size_t particles);
@@ -143,6 +144,7 @@ private:
     // Per particle: the impacts it took this step (0 for the untouched); `corrected` in stamp_
     // once the overlap removal moved it (corrected_ lists those, to set back to 0).
     std::vector<std::uint32_t> strikes_, stamp_, corrected_;
+    std::vector<std::uint32_t> caught_;  // the particles that reached max_strikes this step
     static constexpr std::uint32_t corrected = 0xffffffffu;
     std::vector<std::uint8_t> touched_;
     std::vector<std::uint8_t> listed_;  // per particle: 1 while list_pair_particles runs

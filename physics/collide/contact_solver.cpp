@@ -71,8 +71,8 @@ bool ContactSolver::pair_contact(const ParticleState& s, const Model& m, const P
 }
 
 void ContactSolver::gather(const ParticleState& s, const Model& m, const std::vector<Pair>& pairs,
-                           const std::vector<std::uint32_t>& struck, const std::vector<std::uint8_t>& asleep, double h,
-                           double impact, std::size_t threads) {
+                           const std::vector<std::uint32_t>& struck, const std::vector<std::uint32_t>& caught,
+                           const std::vector<std::uint8_t>& asleep, double h, double impact, std::size_t threads) {
     previous_.swap(contacts_);
     contacts_.clear();
     bodies_.clear();
@@ -100,11 +100,17 @@ void ContactSolver::gather(const ParticleState& s, const Model& m, const std::ve
     // one merge puts them among the pair contacts (both lists in (a, b, wall) order).
     for (const std::uint32_t i : struck) add_body(i);
     sort_bodies(s.size());
+    if (reach_.size() < s.size()) reach_.resize(s.size(), 0.0);
+    reach_of_caught(s, caught, h);
     walls_.clear();
     append_in_slices(bodies_.size(), threads, 8192, slice_contacts_, walls_,
                      [&](std::size_t begin, std::size_t end, std::vector<SolverContact>& out) {
-                         for (std::size_t k = begin; k < end; ++k) wall_contacts(s, m, bodies_[k], asleep, h, impact, spin, out);
+                         for (std::size_t k = begin; k < end; ++k) {
+                             const std::uint32_t i = bodies_[k];
+                             wall_contacts(s, m, i, asleep, h, impact, spin, reach_[i], out);
+                         }
                      });
+    for (const std::uint32_t i : caught) reach_[i] = 0.0;
     if (!walls_.empty()) {
         merged_.clear();
         std::merge(contacts_.begin(), contacts_.end(), walls_.begin(), walls_.end(), std::back_inserter(merged_), before);
@@ -133,14 +139,14 @@ void ContactSolver::sort_bodies(std::size_t particles) {
 
 void ContactSolver::wall_contacts(const ParticleState& s, const Model& m, std::uint32_t i,
                                   const std::vector<std::uint8_t>& asleep, double h, double impact, bool spin,
-                                  std::vector<SolverContact>& out) {
+                                  double reach, std::vector<SolverContact>& out) {
     const RoomBounds room(m.room);
     const Vec3 v = s.velocity(i);
     for (int w = 0; w < wall_count; ++w) {
         const Vec3 inward = RoomBounds::inward_normal(w);
         const double gap = room.distance(w, s.position(i), s.radius[i]);
         const double closing = glm::dot(v, inward);  // the wall's velocity (0) minus the particle's, along n
-        if (gap > contact_margin * s.radius[i] + std::max(-closing, 0.0) * h) continue;
+        if (gap > contact_margin * s.radius[i] + std::max(-closing, 0.0) * h + reach) continue;
         SolverContact& c = out.emplace_back();
         c.a = i;
         c.b = SolverContact::wall_contact;
@@ -366,8 +372,12 @@ std::uint64_t ContactSolver::solve(ParticleState& s, const Model& m, double h, c
     order_by_colour(threads);
     for_each_coloured(threads, [&](const SolverContact& c) { apply(c, c.lambda_n * c.n + c.lambda_t, spin); });
     for (int it = 0; it < iterations; ++it) for_each_coloured(threads, [&](SolverContact& c) { solve_contact(c, spin); });
-    shocked_ = needs_shock(m);
-    if (shocked_) propagate_shock(s, m);
+    clear_anchor_levels();
+    shocked_ = needs_shock();
+    if (shocked_) {
+        propagate_shock(s, m);
+        propagate_from_walls(s, m, h);
+    }
     // The impulses back, for the next warm start (each contact once: threaded, the same bits),
     // and the loaded contacts counted (the sleeping ones keep theirs).
     task_loaded_.assign(range_tasks(contacts_.size(), threads), 0);

@@ -93,10 +93,13 @@ public:
     // Gathers the contacts among the candidate pairs (sorted) from the end state of the step in
     // s, and the wall contacts of their particles and of the `struck` ones (this step's
     // impacts); frozen particles take no part. A contact whose particles are all asleep is
-    // listed (islands are made of contacts) but not solved.
+    // listed (islands are made of contacts) but not solved. The `caught` particles (their
+    // impacts reached the strike cap: a light ball between a heavy one and a wall) take the
+    // walls within the distance their fastest closing contact covers in the step as contacts
+    // too: the solver may push them that far.
     void gather(const ParticleState& s, const Model& m, const std::vector<Pair>& pairs,
-                const std::vector<std::uint32_t>& struck, const std::vector<std::uint8_t>& asleep, double h,
-                double impact, std::size_t threads = 1);
+                const std::vector<std::uint32_t>& struck, const std::vector<std::uint32_t>& caught,
+                const std::vector<std::uint8_t>& asleep, double h, double impact, std::size_t threads = 1);
     // Solves them; changes the velocities (and spins) of s, and moves the end positions by the
     // velocity changes times the method's push (constant_push_share h). Adds the contacts' work
     // on each particle to s.collision_work, from the velocities and spins at the start of the
@@ -123,6 +126,15 @@ public:
     // the other).
     static constexpr double shock_mass_ratio = 50.0;
     static constexpr double shock_least_rise = 0.2;
+    // The wall-anchored pass of shock propagation (contact_shock.cpp): a ball counts as held by a
+    // wall (or by a ball held so) against a push whose direction is within this cosine of the
+    // wall's normal (45 degrees); pushed more sideways, it slides.
+    static constexpr double anchor_least_cosine = 0.7;
+    static constexpr std::uint32_t unanchored = 0xffffffffu;
+    // After a solve that propagated shock: how many balls particle i lies from a wall along a
+    // chain of contacts that push it into that wall (0: it touches the wall; unanchored: no
+    // such chain). The overlap removal holds the nearer ball of such a pair still.
+    std::uint32_t anchor_level(std::uint32_t i) const { return i < anchor_level_.size() ? anchor_level_[i] : unanchored; }
 
 private:
     // A particle as the iterations see it: its velocity and spin and what the impulses need, in
@@ -135,9 +147,11 @@ private:
     static bool pair_contact(const ParticleState& s, const Model& m, const Pair& p, const std::vector<std::uint8_t>& asleep,
                              double h, double impact, bool spin, SolverContact& c);
     // The contacts of particle i with the walls it is close to, appended to `out` in wall order.
+    // `reach`: how much farther than the contact margin a wall may be (caught particles).
     static void wall_contacts(const ParticleState& s, const Model& m, std::uint32_t i,
                               const std::vector<std::uint8_t>& asleep, double h, double impact, bool spin,
-                              std::vector<SolverContact>& out);
+                              double reach, std::vector<SolverContact>& out);
+    void reach_of_caught(const ParticleState& s, const std::vector<std::uint32_t>& caught, double h);
     void sort_bodies(std::size_t particles);  // bodies_ in index order, in_body_ cleared
     void keep_sleeping(const std::vector<std::uint8_t>& asleep);
     void warm_start(std::size_t threads);
@@ -152,8 +166,15 @@ private:
     void order_by_colour(std::size_t threads);
     // Shock propagation (contact_shock.cpp): whether the contacts join masses this unequal, and
     // the pass from the lowest contact up with each lower ball fixed.
-    bool needs_shock(const Model& m) const;
+    bool needs_shock() const;
     void propagate_shock(const ParticleState& s, const Model& m);
+    // The pass from the walls out (contact_shock.cpp): the contacts the weight pass does not
+    // take, each ball nearer a wall fixed; and whether slot x, pushed along p, is held.
+    void propagate_from_walls(const ParticleState& s, const Model& m, double h);
+    bool holds(std::uint32_t k) const { return held_[k] != 0; }  // coloured_[k] is a wall that holds its ball
+    bool anchored(std::uint32_t x, const Vec3& p) const;
+    void brace(std::uint32_t x, const Vec3& p);
+    void clear_anchor_levels();
     template <class Visit>
     void for_each_coloured(std::size_t threads, Visit&& visit);
 
@@ -161,6 +182,8 @@ private:
     std::vector<std::vector<SolverContact>> slice_contacts_;  // per slice of pairs, when threaded
     std::vector<std::uint32_t> bodies_;   // particles in some contact, increasing
     std::vector<std::uint8_t> in_body_;   // per particle: 0 outside gather and place_bodies
+    std::vector<double> reach_;           // per particle: 0 but for the caught ones, in gather
+    std::vector<std::uint8_t> is_caught_;  // per particle: 0 outside reach_of_caught
     std::vector<std::uint32_t> slot_particle_;  // per body slot: its particle (bodies in space order)
     std::vector<Vec3> v0_, w0_;           // velocity and spin of each body before the solve
     std::vector<Body> body_;              // per slot
@@ -177,6 +200,13 @@ private:
     bool shocked_ = false;
     std::vector<std::pair<double, double>> task_masses_;  // least and largest body mass, per task of load_bodies
     std::vector<std::pair<double, std::uint32_t>> shock_order_;  // (height of the lower ball, coloured_ index)
+    // The wall-anchored pass: per body slot its contacts (coloured_ indices, CSR), level and the
+    // direction it is held along (zero for a ball on a wall: its wall contacts say), and the
+    // slots in the order of their levels; per particle the levels of the last shocked solve
+    // (anchored_ lists the particles written, to reset).
+    std::vector<std::uint32_t> adjacency_start_, adjacency_, level_, by_level_, anchor_level_, anchored_;
+    std::vector<Vec3> held_along_;
+    std::vector<std::uint8_t> held_;  // per coloured_ contact: a wall its ball ends the step touching
     static constexpr std::uint32_t parallel_colour = 512;  // smaller colours run on one thread
     static constexpr std::size_t few_bodies_share = 4;     // bodies under 1/4 of the particles: index order
 };
