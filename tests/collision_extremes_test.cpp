@@ -8,6 +8,7 @@
 #include "physics/stepping/energy.hpp"
 #include "physics/stepping/simulation.hpp"
 #include "physics/stepping/warnings.hpp"
+#include "test_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,16 +32,7 @@ std::string describe(const Cell& c) {
 // In a 2 m room under gravity, 1 m up: the pair on one line along x, launched at each other and
 // a little upward, with friction between them and at the walls.
 Simulation pair(const Cell& c) {
-    Model m;
-    m.room.center = {0.0, 1.0, 0.0};
-    m.room.size = {2.0, 2.0, 2.0};
-    m.contact.restitution = c.restitution;
-    m.contact.friction = 0.3;
-    m.integrator.dt = c.dt;
-    m.integrator.method = c.method;
-    m.collisions.enabled = true;
-    m.collisions.restitution = c.restitution;
-    m.collisions.friction = 0.5;
+    const Model m = test::colliding_room(c.dt, c.method, c.restitution, 0.3, 0.5);
     const double r = 0.02, up = 0.3 * c.speed;
     return Simulation(m, {{{-0.3, 1.0, 0.0}, {c.speed, up, 0.0}, 0.05, r},
                           {{0.3, 1.0, 0.0}, {-c.speed, up, 0.0}, 0.05 * c.mass_ratio, r * c.radius_ratio}});

@@ -5,6 +5,7 @@
 // pass takes only contacts that carry weight.
 #include "physics/stepping/energy.hpp"
 #include "physics/stepping/simulation.hpp"
+#include "test_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,17 +24,8 @@ struct Hammer {
 // heavier, the same size) comes at it along x. Both start 1 m up: under gravity they fall side
 // by side, the contact between them horizontal.
 Simulation hammer(const Hammer& h) {
-    Model m;
-    m.room.center = {0.0, 1.0, 0.0};
-    m.room.size = {2.0, 2.0, 2.0};
+    Model m = test::colliding_room(h.dt, h.method, h.restitution, 0.0, 0.0);
     m.world.gravity = {0.0, -h.gravity, 0.0};
-    m.contact.restitution = h.restitution;
-    m.contact.friction = 0.0;
-    m.integrator.dt = h.dt;
-    m.integrator.method = h.method;
-    m.collisions.enabled = true;
-    m.collisions.restitution = h.restitution;
-    m.collisions.friction = 0.0;
     const double r = 0.02;
     return Simulation(m, {{{-1.0 + r, 1.0, 0.0}, {0.0, 0.0, 0.0}, 0.05, r},
                           {{-0.5, 1.0, 0.0}, {-h.speed, 0.0, 0.0}, 50.0, r}});

@@ -29,6 +29,22 @@ inline ParticleSpec ball_at_height(double height, double radius = 0.05) {
     return {{0, height + radius, 0}, {0, 0, 0}, 0.1, radius};
 }
 
+// A 2 m room standing on y = 0 with collisions on: restitution e for the walls and between
+// balls, friction `wall_friction` at the walls and `ball_friction` between balls.
+inline Model colliding_room(double dt, Method method, double e, double wall_friction, double ball_friction) {
+    Model m;
+    m.room.center = {0.0, 1.0, 0.0};
+    m.room.size = {2.0, 2.0, 2.0};
+    m.contact.restitution = e;
+    m.contact.friction = wall_friction;
+    m.integrator.dt = dt;
+    m.integrator.method = method;
+    m.collisions.enabled = true;
+    m.collisions.restitution = e;
+    m.collisions.friction = ball_friction;
+    return m;
+}
+
 struct Crowd {
     Model model;
     std::vector<ParticleSpec> particles;

@@ -379,7 +379,6 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
         find_wall_hits(s, m, h, impact);
         queue_hits(from);
     }
-    caught_.clear();
     for (const std::uint32_t i : moved_)
         if (strikes_[i] >= max_strikes) caught_.push_back(i);
     for (const std::uint32_t i : moved_) strikes_[i] = 0;  // only struck particles carry strikes
@@ -405,7 +404,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     }
     list_pair_particles();
     const double impact = impact_speed(m, h);
-    caught_.clear();
+    caught_.clear();  // filled by resolve_impacts
     const std::uint64_t impacts = pairs_.empty() ? 0 : resolve_impacts(s, m, h, impact, threads);
     // Then the resting contacts, among the pairs and with the walls, and who sleeps next step.
     solver_.gather(s, m, pairs_, moved_, caught_, asleep, h, impact, threads);
@@ -421,8 +420,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     // overlaps are measured, so that the ball behind it is the one moved back.
     const RoomBounds room(m.room);
     for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
-    remove_overlaps(s, m);
-    for (const std::uint32_t i : moved_) move_to(s, m, i, room.clamp_inside(s.position(i), s.radius[i]));
+    remove_overlaps(s, m);  // keeps every ball it moves inside the room
     // Each paired particle once (pair_particles_ lists each once): threaded, the same bits.
     for_ranges(pair_particles_.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t k = begin; k < end; ++k) {

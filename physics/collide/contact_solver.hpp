@@ -201,7 +201,7 @@ private:
     std::vector<std::pair<double, double>> task_masses_;  // least and largest body mass, per task of load_bodies
     std::vector<std::pair<double, std::uint32_t>> shock_order_;  // (height of the lower ball, coloured_ index)
     // The wall-anchored pass: per body slot its contacts (coloured_ indices, CSR), level and the
-    // direction it is held along (zero for a ball on a wall: its wall contacts say), and the
+    // direction it is held along (unused for a ball on a wall: its wall contacts say), and the
     // slots in the order of their levels; per particle the levels of the last shocked solve
     // (anchored_ lists the particles written, to reset).
     std::vector<std::uint32_t> adjacency_start_, adjacency_, level_, by_level_, anchor_level_, anchored_;
