@@ -59,6 +59,20 @@ TEST(TickLabels, JustEnoughDigitsToTellNeighboursApart) {
     EXPECT_EQ(format_tick(2e7, 5e6), "2.0e+07");
 }
 
+// The kinetic energy of an elastic gas is constant to round-off: its plot spans 87.4694 J +- 1e-9.
+// Every label of such an axis must still differ from its neighbours (they once all read
+// "8.746940e+01", the mantissa cut at six digits).
+TEST(TickLabels, DistinctOnASpanOfRoundOffAroundALargeValue) {
+    for (const double span : {1e-5, 1e-7, 1e-9, 1e-11}) {
+        const double lo = 87.469401234, hi = lo + span;
+        const Ticks ticks = nice_ticks(lo, hi, 4);
+        ASSERT_GE(ticks.values.size(), 2u) << span;
+        for (std::size_t i = 1; i < ticks.values.size(); ++i)
+            EXPECT_NE(format_tick(ticks.values[i], ticks.step), format_tick(ticks.values[i - 1], ticks.step))
+                << "span " << span << ": " << format_tick(ticks.values[i], ticks.step);
+    }
+}
+
 TEST(LogTicks, DecadesAndFinerMarksOnShortRanges) {
     const Ticks wide = log_ticks(1e-9, 1e-1);
     EXPECT_EQ(wide.values.size(), 9u);  // 1e-9 ... 1e-1

@@ -66,18 +66,20 @@ inline Ticks log_ticks(double lo, double hi) {
 }
 
 // A tick label with just enough digits to tell neighbouring ticks `step` apart: fixed notation
-// for ordinary magnitudes, scientific for very small steps or very large values.
+// for ordinary magnitudes (however fine the step: 87.4694012 J on an axis that spans round-off),
+// scientific for very small or very large values. Digits stop where a double has none left.
 inline std::string format_tick(double value, double step) {
     char buf[48];
     if (value == 0.0) return "0";
     const double mag = std::abs(value);
-    if (step > 0.0 && step >= 1e-4 && mag < 1e6) {
-        const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+    const int step_exponent = step > 0.0 ? static_cast<int>(std::floor(std::log10(step) + 1e-9)) : 0;
+    if (step > 0.0 && mag < 1e6 && (step >= 1e-4 || mag >= 1e-3)) {
+        const int decimals = std::clamp(-step_exponent, 0, 15);
         std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
     } else {
         // Digits after the point in the mantissa: as many as the step needs relative to the value.
         int digits = 0;
-        if (step > 0.0) digits = std::clamp(static_cast<int>(std::floor(std::log10(mag)) - std::floor(std::log10(step) + 1e-9)), 0, 6);
+        if (step > 0.0) digits = std::clamp(static_cast<int>(std::floor(std::log10(mag))) - step_exponent, 0, 16);
         std::snprintf(buf, sizeof buf, "%.*e", digits, value);
     }
     return buf;
