@@ -39,16 +39,24 @@ namespace gl_delete {
 inline void buffer(GLuint id) { glDeleteBuffers(1, &id); }
 inline void vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
 inline void program(GLuint id) { glDeleteProgram(id); }
+inline void texture(GLuint id) { glDeleteTextures(1, &id); }
 }  // namespace gl_delete
 
 using GlBuffer = GlName<gl_delete::buffer>;
 using GlVertexArray = GlName<gl_delete::vertex_array>;
 using GlProgram = GlName<gl_delete::program>;
+using GlTexture = GlName<gl_delete::texture>;
 
 inline GlBuffer make_buffer() {
     GLuint id = 0;
     glGenBuffers(1, &id);
     return GlBuffer(id);
+}
+
+inline GlTexture make_texture() {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    return GlTexture(id);
 }
 
 inline GlVertexArray make_vertex_array() {

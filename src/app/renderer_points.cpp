@@ -1,5 +1,7 @@
 #include "app/renderer_points.hpp"
 
+#include "app/point_splat.hpp"
+
 namespace pl::app {
 
 PointSpriteRenderer::PointSpriteRenderer(const InstanceBuffer& instances)
@@ -15,6 +17,7 @@ void PointSpriteRenderer::draw(const CameraMatrices& camera, float viewport_heig
     program_.set("u_view", camera.view);
     program_.set("u_proj", camera.proj);
     program_.set("u_viewport_height", viewport_height_px);
+    program_.set("u_size_range", glm::vec2(min_point_diameter_px, max_point_diameter_px));
     glEnable(GL_PROGRAM_POINT_SIZE);
     glBindVertexArray(vao_.get());
     glDrawArrays(GL_POINTS, 0, instances_.count());

@@ -36,7 +36,9 @@ void build_instances(const Experiment& e, std::optional<std::size_t> only_varian
 
 }  // namespace
 
-SceneRenderer::SceneRenderer() : spheres_(instances_), points_(instances_), shadows_(instances_) {}
+SceneRenderer::SceneRenderer()
+    : spheres_(instances_), points_(instances_), shadows_(instances_),
+      splat_on_cpu_(splat_points_on_cpu(reinterpret_cast<const char*>(glGetString(GL_RENDERER)))) {}
 
 LineSegments& SceneRenderer::PanePlan::add_overlay(float width_px, bool through_balls) {
     if (overlay_count == overlays.size()) overlays.emplace_back();
@@ -120,12 +122,14 @@ void SceneRenderer::submit_pane(const PanePlan& plan) {
 
     glDepthMask(GL_FALSE);
     draw_lines(plan.floor_grid, plan);
-    instances_.upload(plan.instances);
+    const bool splat = plan.many() && splat_on_cpu_;
+    if (!splat) instances_.upload(plan.instances);
     if (!plan.many())
         shadows_.draw(plan.cam, static_cast<float>(plan.room.floor_y()) + 1e-4f * static_cast<float>(plan.room.size.y),
                       plan.min_radius_per_depth);
     glDepthMask(GL_TRUE);
-    if (plan.many()) points_.draw(plan.cam, plan.viewport().y);
+    if (splat) splat_.draw(plan.instances, plan.cam, plan.x, plan.y, plan.w, plan.h);
+    else if (plan.many()) points_.draw(plan.cam, plan.viewport().y);
     else spheres_.draw(plan.cam, plan.min_radius_per_depth);
 
     glDepthMask(GL_FALSE);

@@ -10,6 +10,7 @@
 #include "app/renderer_room.hpp"
 #include "app/renderer_shadows.hpp"
 #include "app/renderer_spheres.hpp"
+#include "app/renderer_splat.hpp"
 #include "app/trail_history.hpp"
 #include "app/view_panes.hpp"
 #include "ui/lab_session.hpp"
@@ -72,6 +73,8 @@ private:
     SphereRenderer spheres_;
     PointSpriteRenderer points_;
     ShadowRenderer shadows_;
+    SplatRenderer splat_;
+    bool splat_on_cpu_ = false;  // many particles splatted on the CPU (a CPU rasteriser: renderer_splat.hpp)
     LineRenderer lines_;
     RoomRenderer room_;
     BackgroundRenderer background_;

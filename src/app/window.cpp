@@ -80,8 +80,12 @@ bool AppWindow::software_renderer() {
     }
     glfwMakeContextCurrent(nullptr);
     glfwDestroyWindow(probe);
+    return is_cpu_rasteriser(name);
+}
+
+bool is_cpu_rasteriser(std::string_view gl_renderer) {
     for (const char* cpu : {"llvmpipe", "softpipe", "swrast", "SwiftShader"})
-        if (name.find(cpu) != std::string::npos) return true;
+        if (gl_renderer.find(cpu) != std::string_view::npos) return true;
     return false;
 }
 

@@ -4,10 +4,15 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 struct GLFWwindow;
 
 namespace pl::app {
+
+// Whether an OpenGL GL_RENDERER string names a CPU rasteriser (Mesa's llvmpipe or softpipe,
+// SwiftShader): one where every vertex and pixel costs CPU time the physics could use.
+bool is_cpu_rasteriser(std::string_view gl_renderer);
 
 class AppWindow {
 public:
