@@ -22,6 +22,7 @@ Rgba outcome_color(StabilityOutcome o) {
         case StabilityOutcome::escaped: return {0.65f, 0.35f, 0.90f, 0.85f};
         case StabilityOutcome::jitter: return {0.90f, 0.85f, 0.25f, 0.85f};
         case StabilityOutcome::tunnelled: return {0.95f, 0.45f, 0.75f, 0.85f};
+        case StabilityOutcome::overlap: return {0.35f, 0.75f, 0.95f, 0.85f};
     }
     return {0.5f, 0.5f, 0.5f, 1.0f};
 }

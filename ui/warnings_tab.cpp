@@ -24,6 +24,7 @@ const char* kind_name(WarningKind k) {
         case WarningKind::impact_cap: return "frozen (impact cap)";
         case WarningKind::no_rest: return "never rests (explicit Euler)";
         case WarningKind::collision_overlap: return "balls left overlapping";
+        case WarningKind::collision_crossing: return "balls crossed in a step";
     }
     return "?";
 }

@@ -433,6 +433,8 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
     for (const std::uint32_t i : moved_)
         if (islands_.asleep()[i]) islands_.wake(i);
     islands_.update(s, solver_.contacts(), m.contact.rest_speed, h, threads);
+    crossings_.clear();
+    find_crossings(pairs_, start_, s, islands_.asleep(), 0.5 * warn_overlap, crossings_);
     return impacts;
 }
 

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "physics/collide/pair_cache.hpp"
+#include "physics/collide/pair_crossings.hpp"
 #include "physics/collide/contact_solver.hpp"
 #include "physics/collide/sleep_islands.hpp"
 #include "physics/model/scene.hpp"
@@ -91,6 +92,8 @@ public:
         double share;
     };
     const std::vector<DeepOverlap>& deep_overlaps() const { return deep_overlaps_; }
+    // The last step's pairs that crossed each other (pair_crossings.hpp).
+    const std::vector<PairCrossing>& crossings() const { return crossings_; }
     // The last step's wall hits taken among the impacts (wall_hits.cpp), as bounce events
     // whose t is the time into the step.
     const std::vector<Event>& wall_bounces() const { return wall_bounces_; }
@@ -166,6 +169,7 @@ private:
     SleepIslands islands_;
     std::uint64_t resting_ = 0;
     std::vector<DeepOverlap> deep_overlaps_;
+    std::vector<PairCrossing> crossings_;
     std::vector<std::pair<double, std::uint32_t>> bottom_up_;  // the overlap removal's order under shock
     std::vector<Event> wall_bounces_;
 };

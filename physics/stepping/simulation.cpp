@@ -132,6 +132,8 @@ void Simulation::collide_step() {
     const WarningSink sink{&warnings_, &warned_};
     for (const collide::CollisionPass::DeepOverlap& o : collisions_->deep_overlaps())
         sink.raise(WarningKind::collision_overlap, o.a, time(), o.share);
+    for (const collide::PairCrossing& c : collisions_->crossings())
+        sink.raise(WarningKind::collision_crossing, c.a, time(), c.travel);
 }
 
 std::size_t Simulation::events_since(const EventMark& mark) const {

@@ -60,6 +60,13 @@ std::string warning_message(const Warning& w, const Model& model) {
                                "on the way did not follow, and a crowd struck hard in one step asks more of the contact "
                                "solver's iterations than they give). Use a smaller dt (dt = {:.3g} s now), so that balls move less than their radius a step",
                                w.particle, w.t, 100.0 * w.value, model.integrator.dt);
+        case WarningKind::collision_crossing:
+            return fmt::format("particle {} and another ball crossed each other within the step ending at t = {:.6g} s: "
+                               "their separation moved {:.3g} contact distances in one step, too far for the collision "
+                               "pass to follow (it meets pairs on straight paths, and a ball that struck a wall or was "
+                               "driven against one on the way did not take one), so they may have gone through each "
+                               "other. Use a smaller dt (dt = {:.3g} s now), so that balls move less than their radius a step",
+                               w.particle, w.t, w.value, model.integrator.dt);
     }
     return {};
 }

@@ -20,8 +20,9 @@ enum class WarningKind : std::uint8_t {
     impact_cap,     // more wall impacts in one step than max_impacts_per_step: frozen
     no_rest,        // explicit Euler at this dt cannot come to rest on a floor (see no_rest_dt)
     collision_overlap,  // a step left two balls overlapping deeply (collide::CollisionPass::warn_overlap)
+    collision_crossing, // two balls crossed each other within one step (collide/pair_crossings.hpp)
 };
-constexpr std::size_t warning_kind_count = static_cast<std::size_t>(WarningKind::collision_overlap) + 1;
+constexpr std::size_t warning_kind_count = static_cast<std::size_t>(WarningKind::collision_crossing) + 1;
 // Per particle, a bit per kind it has been warned about (and one more: WarningSink).
 using WarningBits = std::uint16_t;
 
@@ -32,7 +33,8 @@ struct Warning {
     // drag_validity: Re; mach: speed relative to the air (m/s); stability: drag stiffness k
     // (1/s); runaway, impact_cap: the speed the failed step reached (m/s); frozen: unused; no_rest: the
     // largest dt (s) at which explicit Euler comes to rest; collision_overlap: the overlap, as a share
-    // of the pair's contact distance.
+    // of the pair's contact distance; collision_crossing: how far the pair's separation moved in the
+    // step, in contact distances.
     double value = 0.0;
 };
 

@@ -23,6 +23,7 @@ const char* to_string(StabilityOutcome o) {
         case StabilityOutcome::escaped: return "escaped";
         case StabilityOutcome::jitter: return "jitter";
         case StabilityOutcome::tunnelled: return "tunnelled";
+        case StabilityOutcome::overlap: return "overlap";
     }
     return "?";
 }
@@ -39,6 +40,11 @@ StabilityGrid default_stability_grid(bool quick) {
         g.restitutions = {0.0, 1.0};
         g.radius_fractions = {0.05, 0.49};
         g.sweep_stiffnesses = {0.0};
+        g.pair_dts = {1e-3, 0.05};
+        g.pair_speeds = {10.0, 100.0};
+        g.pair_restitutions = {0.0, 1.0};
+        g.pair_radius_ratios = {1.0, 10.0};
+        g.pair_mass_ratios = {1e-3, 1e3};
         g.limits.max_steps = 1000;
         return g;
     }
@@ -52,6 +58,11 @@ StabilityGrid default_stability_grid(bool quick) {
     g.restitutions = {0.0, 0.5, 1.0};
     g.radius_fractions = {0.01, 0.25, 0.49};
     g.sweep_stiffnesses = {0.0, 100.0};
+    g.pair_dts = {1e-4, 1e-3, 1e-2, 0.05};
+    g.pair_speeds = {1.0, 10.0, 100.0};
+    g.pair_restitutions = {0.0, 0.5, 1.0};
+    g.pair_radius_ratios = {1.0, 10.0};
+    g.pair_mass_ratios = {1e-3, 1.0, 1e3};
     return g;
 }
 
@@ -88,6 +99,7 @@ double time_to_rest_bound(double speed, double height, double g, double e) {
 }  // namespace
 
 StabilityCell classify_stability(const StabilityBase& base, const StabilityCase& c, const StabilityRunLimits& limits) {
+    if (c.pair()) return classify_pair(base, c, limits);
     StabilityCell cell;
     cell.c = c;
     const double min_size = std::min({base.room.size.x, base.room.size.y, base.room.size.z});
@@ -271,8 +283,14 @@ std::vector<StabilityLimit> stability_limits(const std::vector<StabilityCell>& m
 
 StabilityReport run_stability_study(const StabilityBase& base, const StabilityOptions& options) {
     const StabilityGrid& g = options.grid;
-    std::vector<StabilityCase> map, sweep;
+    std::vector<StabilityCase> map, sweep, pairs;
     for (Method method : g.methods) {
+        for (double dt : g.pair_dts)
+            for (double speed : g.pair_speeds)
+                for (double e : g.pair_restitutions)
+                    for (double radii : g.pair_radius_ratios)
+                        for (double masses : g.pair_mass_ratios)
+                            pairs.push_back({method, dt, 0.0, speed, e, g.pair_radius_fraction, radii, masses});
         std::vector<StabilityCase> m =
             map_cases(method, g.dts, g.stiffnesses, g.map_speed, g.map_restitution, g.map_radius_fraction);
         map.insert(map.end(), m.begin(), m.end());
@@ -283,9 +301,11 @@ StabilityReport run_stability_study(const StabilityBase& base, const StabilityOp
                         for (double r : g.radius_fractions) sweep.push_back({method, dt, k, speed, e, r});
     }
     StabilityReport report;
-    const std::size_t total = map.size() + sweep.size();
+    const std::size_t total = map.size() + sweep.size() + pairs.size();
     report.map_cells = classify_all(base, map, options, 0, total, report.cancelled);
     if (!report.cancelled) report.sweep_cells = classify_all(base, sweep, options, map.size(), total, report.cancelled);
+    if (!report.cancelled)
+        report.pair_cells = classify_all(base, pairs, options, map.size() + sweep.size(), total, report.cancelled);
     report.limits = stability_limits(report.map_cells);
     return report;
 }

@@ -1,8 +1,10 @@
 // Stability at the extremes: a grid over time step, linear-drag stiffness k (b = k m), launch
 // speed, restitution, particle radius and method; each cell is one particle launched from the
-// room's centre and classified by what happened to it.
+// room's centre and classified by what happened to it. A collision slice throws two balls at
+// each other instead, over time step, speed, restitution, radius ratio and mass ratio.
 #pragma once
 
+#include "physics/collide/collision_pass.hpp"
 #include "physics/model/scene.hpp"
 
 #include <atomic>
@@ -21,7 +23,10 @@ enum class StabilityOutcome : std::uint8_t {
     escaped,        // the sphere overlapped a wall (centre beyond its contact plane)
     jitter,         // e < 1 but still bouncing on the floor after the time-to-rest bound (or
                     // explicit Euler's rest trap seen before it, Warning no_rest)
-    tunnelled,      // the centre passed through a wall (outside the room)
+    tunnelled,      // the centre passed through a wall (outside the room); of a pair, one ball
+                    // passed through the other
+    overlap,        // a pair: a step left the two balls deeper in each other than
+                    // collision_overlap_limit of their contact distance
 };
 const char* to_string(StabilityOutcome o);
 
@@ -32,7 +37,11 @@ struct StabilityCase {
     double stiffness = 0.0;        // k, 1/s: linear drag with b = k m
     double speed = 5.0;            // launch speed, m/s
     double restitution = 0.5;
-    double radius_fraction = 0.05; // radius / smallest room size (< 0.5)
+    double radius_fraction = 0.05; // radius / smallest room size (< 0.5); of a pair, ball 0's
+    // A pair (collision slice) when > 0: ball 1's radius and mass over ball 0's.
+    double pair_radius_ratio = 0.0;
+    double pair_mass_ratio = 1.0;
+    bool pair() const { return pair_radius_ratio > 0.0; }
 };
 
 struct StabilityCell {
@@ -42,6 +51,8 @@ struct StabilityCell {
     double simulated_s = 0.0;
     double max_energy_ratio = 0.0;  // max (KE + PE) / E0 over the run
     bool jitter_checked = false;    // the run lasted past the time-to-rest bound (e < 1)
+    double max_overlap = 0.0;       // a pair: deepest overlap at a step's end, share of the contact distance
+    bool collision_warned = false;  // a pair: the engine raised collision_overlap or collision_crossing
     std::string detail;             // what was seen, e.g. "t = 0.42 s: KE + PE = 3.1 E0"
 };
 
@@ -56,19 +67,26 @@ struct StabilityRunLimits {
 
 // The grid is a union of slices rather than the full product:
 //  * the dt x k map for every method, at map_speed / map_restitution / map_radius_fraction;
-//  * the dt x speed x restitution x radius sweep for every method, at k = 0 and at k = sweep_k.
+//  * the dt x speed x restitution x radius sweep for every method, at k = 0 and at k = sweep_k;
+//  * the collision slice: pairs over dt x speed x restitution x radius ratio x mass ratio for
+//    every method (ball 0 of radius pair_radius_fraction of the room, friction the walls').
 struct StabilityGrid {
     std::vector<Method> methods;
     std::vector<double> dts, stiffnesses;                       // map axes
     double map_speed = 5.0, map_restitution = 0.5, map_radius_fraction = 0.05;
     std::vector<double> sweep_dts, speeds, restitutions, radius_fractions;
     std::vector<double> sweep_stiffnesses;
+    std::vector<double> pair_dts, pair_speeds, pair_restitutions, pair_radius_ratios, pair_mass_ratios;
+    double pair_radius_fraction = 0.01;
     StabilityRunLimits limits;
 };
 StabilityGrid default_stability_grid(bool quick);
 
 // Tolerances used by the classification.
 constexpr double stability_energy_tolerance = 0.01;  // relative to E0 (E0 >= m |g| 1 mm)
+// The depth past which a pair's overlap is an outcome of its own: the engine's collision_overlap
+// warning limit.
+constexpr double collision_overlap_limit = collide::CollisionPass::warn_overlap;
 
 // The scene provides the room, gravity, contact friction / rest speed and the particle's mass
 // (particle 0); launch position is the room's centre, the direction a fixed oblique one.
@@ -81,8 +99,10 @@ struct StabilityBase {
 StabilityBase stability_base(const Scene& scene);
 StabilityBase default_stability_base();  // the seed's 2 m cube room
 
+// One cell: a single particle, or a pair (c.pair(): collision_stability.cpp).
 StabilityCell classify_stability(const StabilityBase& base, const StabilityCase& c,
                                  const StabilityRunLimits& limits = {});
+StabilityCell classify_pair(const StabilityBase& base, const StabilityCase& c, const StabilityRunLimits& limits = {});
 
 struct StabilityLimit {
     Method method = Method::semi_implicit_euler;
@@ -102,6 +122,7 @@ struct StabilityOptions {
 struct StabilityReport {
     std::vector<StabilityCell> map_cells;    // method x dt x k
     std::vector<StabilityCell> sweep_cells;  // method x k x dt x speed x restitution x radius
+    std::vector<StabilityCell> pair_cells;   // method x dt x speed x restitution x radius ratio x mass ratio
     std::vector<StabilityLimit> limits;      // per method and k of the map
     bool cancelled = false;
 };

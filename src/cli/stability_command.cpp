@@ -35,6 +35,7 @@ char outcome_letter(StabilityOutcome o) {
         case StabilityOutcome::escaped: return 'X';
         case StabilityOutcome::jitter: return 'J';
         case StabilityOutcome::tunnelled: return 'T';
+        case StabilityOutcome::overlap: return 'O';
     }
     return '?';
 }
@@ -44,6 +45,8 @@ void cells_csv(CsvWriter& csv, const std::vector<StabilityCell>& cells, const ch
         csv.field(slice).field(to_string(c.c.method)).field(c.c.dt).field(c.c.stiffness).field(c.c.speed);
         csv.field(c.c.restitution).field(c.c.radius_fraction).field(to_string(c.outcome)).field(c.steps);
         csv.field(c.simulated_s).field(c.max_energy_ratio).field(c.jitter_checked ? "1" : "0").field(c.detail);
+        if (c.c.pair()) csv.field(c.c.pair_radius_ratio).field(c.c.pair_mass_ratio).field(c.max_overlap).field(c.collision_warned ? "1" : "0");
+        else csv.field("").field("").field("").field("");
         csv.end_row();
     }
 }
@@ -62,7 +65,52 @@ Json cell_json(const StabilityCell& c) {
     j["max_energy_ratio"] = c.max_energy_ratio;
     j["jitter_checked"] = c.jitter_checked;
     j["detail"] = c.detail;
+    if (c.c.pair()) {
+        j["radius_ratio"] = c.c.pair_radius_ratio;
+        j["mass_ratio"] = c.c.pair_mass_ratio;
+        j["max_overlap"] = c.max_overlap;
+        j["collision_warned"] = c.collision_warned;
+    }
     return j;
+}
+
+constexpr std::size_t outcome_count = static_cast<std::size_t>(StabilityOutcome::overlap) + 1;
+
+// Per method: the cells and how many of each outcome, and how many `flagged` (a last column).
+template <typename Flag>
+void outcome_counts(const std::vector<StabilityCell>& cells, const std::vector<Method>& methods, const char* flag_name,
+                    Flag flagged) {
+    Table s;
+    s.header = {"method", "cells"};
+    for (std::size_t o = 0; o < outcome_count; ++o) s.header.push_back(to_string(static_cast<StabilityOutcome>(o)));
+    s.header.push_back(flag_name);
+    for (Method m : methods) {
+        std::array<int, outcome_count> n{};
+        int count = 0, flags = 0;
+        for (const StabilityCell& c : cells)
+            if (c.c.method == m) {
+                ++n[static_cast<std::size_t>(c.outcome)];
+                ++count;
+                flags += flagged(c) ? 1 : 0;
+            }
+        std::vector<std::string> row{to_string(m), std::to_string(count)};
+        for (int k : n) row.push_back(std::to_string(k));
+        row.push_back(std::to_string(flags));
+        s.rows.push_back(std::move(row));
+    }
+    s.print();
+}
+
+template <typename Describe>
+void first_unstable(const std::vector<StabilityCell>& cells, const std::vector<Method>& methods, Describe describe) {
+    for (Method m : methods) {
+        int shown = 0;
+        for (const StabilityCell& c : cells) {
+            if (c.c.method != m || c.outcome == StabilityOutcome::stable) continue;
+            if (shown++ == 5) break;
+            std::printf("  %s %s: %s (%s)\n", to_string(m), describe(c).c_str(), to_string(c.outcome), c.detail.c_str());
+        }
+    }
 }
 
 void print_text(const StabilityReport& r, const StabilityGrid& g, const std::string& where) {
@@ -102,32 +150,23 @@ void print_text(const StabilityReport& r, const StabilityGrid& g, const std::str
     std::printf("\nsweep: dt x speed x restitution x radius at k in {");
     for (std::size_t i = 0; i < g.sweep_stiffnesses.size(); ++i) std::printf("%s%g", i ? ", " : "", g.sweep_stiffnesses[i]);
     std::printf("} 1/s: outcomes per method\n");
-    Table s;
-    s.header = {"method", "cells", "stable", "energy_growth", "nan", "escaped", "jitter", "tunnelled", "jitter checked"};
-    for (Method m : g.methods) {
-        std::array<int, 6> n{};
-        int cells = 0, checked = 0;
-        for (const StabilityCell& c : r.sweep_cells)
-            if (c.c.method == m) {
-                ++n[static_cast<std::size_t>(c.outcome)];
-                ++cells;
-                checked += c.jitter_checked ? 1 : 0;
-            }
-        s.rows.push_back({to_string(m), std::to_string(cells), std::to_string(n[0]), std::to_string(n[1]), std::to_string(n[2]),
-                          std::to_string(n[3]), std::to_string(n[4]), std::to_string(n[5]), std::to_string(checked)});
-    }
-    s.print();
+    outcome_counts(r.sweep_cells, g.methods, "jitter checked", [](const StabilityCell& c) { return c.jitter_checked; });
     std::printf("\nunstable sweep cells (first 5 per method; --csv lists every cell):\n");
-    for (Method m : g.methods) {
-        int shown = 0;
-        for (const StabilityCell& c : r.sweep_cells) {
-            if (c.c.method != m || c.outcome == StabilityOutcome::stable) continue;
-            if (shown++ == 5) break;
-            std::printf("  %s dt=%s k=%s speed=%s e=%s r=%s: %s (%s)\n", to_string(m), sig(c.c.dt, 3).c_str(),
-                        sig(c.c.stiffness, 3).c_str(), sig(c.c.speed, 3).c_str(), sig(c.c.restitution, 2).c_str(),
-                        sig(c.c.radius_fraction, 2).c_str(), to_string(c.outcome), c.detail.c_str());
-        }
-    }
+    first_unstable(r.sweep_cells, g.methods, [](const StabilityCell& c) {
+        return fmt::format("dt={} k={} speed={} e={} r={}", sig(c.c.dt, 3), sig(c.c.stiffness, 3), sig(c.c.speed, 3),
+                           sig(c.c.restitution, 2), sig(c.c.radius_fraction, 2));
+    });
+
+    std::printf("\ncollisions: two balls thrown at each other (ball 0 of radius %g of the room, ball 1 the radius and\n"
+                "mass ratios times it), dt x speed x restitution x radius ratio x mass ratio; overlap: left deeper than\n"
+                "%g of the contact distance\n",
+                g.pair_radius_fraction, collision_overlap_limit);
+    outcome_counts(r.pair_cells, g.methods, "warned", [](const StabilityCell& c) { return c.collision_warned; });
+    std::printf("\nunstable collision cells (first 5 per method):\n");
+    first_unstable(r.pair_cells, g.methods, [](const StabilityCell& c) {
+        return fmt::format("dt={} speed={} e={} radii 1:{} masses 1:{}", sig(c.c.dt, 3), sig(c.c.speed, 3),
+                           sig(c.c.restitution, 2), sig(c.c.pair_radius_ratio, 3), sig(c.c.pair_mass_ratio, 3));
+    });
 }
 
 int stability(const StabilityCliOptions& o) {
@@ -149,11 +188,13 @@ int stability(const StabilityCliOptions& o) {
     if (o.csv) {
         CsvWriter csv(std::cout);
         for (const char* h : {"slice", "method", "dt_s", "k_per_s", "speed_m_s", "restitution", "radius_fraction", "outcome", "steps",
-                              "simulated_s", "max_energy_ratio", "jitter_checked", "detail"})
+                              "simulated_s", "max_energy_ratio", "jitter_checked", "detail", "radius_ratio", "mass_ratio",
+                              "max_overlap", "collision_warned"})
             csv.field(h);
         csv.end_row();
         cells_csv(csv, r.map_cells, "map");
         cells_csv(csv, r.sweep_cells, "sweep");
+        cells_csv(csv, r.pair_cells, "collisions");
     } else if (o.json) {
         Json j = json_document();
         j["energy_tolerance"] = stability_energy_tolerance;
@@ -168,11 +209,12 @@ int stability(const StabilityCliOptions& o) {
             limits.push_back(x);
         }
         j["limits"] = limits;
-        Json map = Json::array(), sweep = Json::array();
-        for (const StabilityCell& c : r.map_cells) map.push_back(cell_json(c));
-        for (const StabilityCell& c : r.sweep_cells) sweep.push_back(cell_json(c));
-        j["map"] = map;
-        j["sweep"] = sweep;
+        j["collision_overlap_limit"] = collision_overlap_limit;
+        for (const auto& [name, cells] : {std::pair{"map", &r.map_cells}, {"sweep", &r.sweep_cells}, {"collisions", &r.pair_cells}}) {
+            Json list = Json::array();
+            for (const StabilityCell& c : *cells) list.push_back(cell_json(c));
+            j[name] = list;
+        }
         std::cout << j.dump(2) << "\n";
     } else {
         print_text(r, options.grid, where);
@@ -184,12 +226,16 @@ int stability(const StabilityCliOptions& o) {
 
 void add_stability_command(CLI::App& app, int& exit_code) {
     auto o = std::make_shared<StabilityCliOptions>();
-    CLI::App* cmd = app.add_subcommand("stability", "extremes grid: stable / energy growth / NaN / escaped / jitter / tunnelled");
+    CLI::App* cmd =
+        app.add_subcommand("stability", "extremes grid: stable / energy growth / NaN / escaped / jitter / tunnelled / overlap");
     cmd->footer(
         "Sweep the extremes: time step (1e-5 .. 0.5 s) x linear drag stiffness k (0 .. 1e4 1/s) for\n"
         "every method, and time step x launch speed (0 .. 1e3 m/s) x restitution (0, 0.5, 1) x radius\n"
-        "(up to 0.49 of the room). Each cell is classified stable, energy_growth, nan, escaped, jitter\n"
-        "or tunnelled; the theoretical dt limit is printed beside the measured one.");
+        "(up to 0.49 of the room); and, with collisions, two balls thrown at each other: time step x\n"
+        "speed (1 .. 100 m/s) x restitution x radius ratio (1, 10) x mass ratio (1e-3 .. 1e3). Each\n"
+        "cell is classified stable, energy_growth, nan, escaped, jitter, tunnelled or (a pair left\n"
+        "deeper in each other than 10% of the contact distance) overlap; the theoretical dt limit is\n"
+        "printed beside the measured one.");
     cmd->add_option("PRESET", o->preset, "preset whose room, gravity, contact and particle mass to use\n"
                                          "(default: the seed's 2 m cube)");
     add_set_option(cmd, o->sets);
