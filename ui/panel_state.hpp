@@ -51,6 +51,7 @@ struct StabilityMap {
     StabilitySettings settings;
     std::vector<StabilityCell> cells;  // dts outer, stiffnesses inner
     std::vector<StabilityLimit> limits;
+    std::vector<StabilityCell> pair_cells;  // the study's collision slice for the method
     bool cancelled = false;
 };
 
@@ -100,7 +101,7 @@ struct PanelState {
     double accuracy_duration_s = 2.0;
     int accuracy_view = 0;        // 0: diagram, 1: table
     bool accuracy_window = false; // the diagram also in a window of its own
-    int stability_view = 0;       // 0: map, 1: limits table
+    int stability_view = 0;       // 0: map, 1: limits table, 2: collision slice
     bool stability_window = false;
     int accuracy_cost_axis = 0;   // 0: force evaluations, 1: wall time per simulated second
     int accuracy_error_axis = 0;  // 0: position, 1: velocity, 2: bounce time

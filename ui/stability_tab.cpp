@@ -1,6 +1,6 @@
 // Stability tab: the dt x drag-stiffness map of the current method (physics/studies/stability_study.hpp),
 // computed in the background, coloured by outcome, with the theoretical limit and the current
-// setting marked.
+// setting marked; beside it the collision slice (pairs thrown at each other) on the same method.
 #include "physics/studies/stability_study.hpp"
 #include "ui/panel_state.hpp"
 #include "ui/plot.hpp"
@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace pl::ui {
@@ -57,15 +58,26 @@ void start_map(LabSession& s, PanelState& p) {
     const StabilityBase base = stability_base(s.scene);
     const StabilityGrid defaults = default_stability_grid(false);
     p.stability.start([settings, base, defaults](const std::function<void(double)>& progress, const std::atomic<bool>& cancel) {
+        // The map is most of the work (its cells run up to 4000 steps of one particle; the pairs'
+        // slice is 216 cells of two): 0.8 of the progress bar, the pairs the rest.
+        constexpr double map_share = 0.8;
         StabilityOptions o;
         o.threads = 1;  // leave the other core to the ui and the running experiment
-        o.progress = progress;
+        o.progress = [&progress](double f) { progress(map_share * f); };
         o.cancel = &cancel;
         StabilityMap map;
         map.settings = settings;
         map.cells = stability_map(base, settings.method, settings.dts, settings.stiffnesses, defaults.map_speed,
                                   defaults.map_restitution, defaults.map_radius_fraction, o);
         map.limits = stability_limits(map.cells);
+        if (!cancel.load()) {
+            o.grid = defaults;
+            o.grid.methods = {settings.method};
+            o.grid.dts.clear();  // the collision slice alone
+            o.grid.sweep_dts.clear();
+            o.progress = [&progress](double f) { progress(map_share + (1.0 - map_share) * f); };
+            map.pair_cells = run_stability_study(base, o).pair_cells;
+        }
         map.cancelled = cancel.load();
         return map;
     });
@@ -126,6 +138,56 @@ void limits_table(const StabilityMap& m) {
     ImGui::EndTable();
 }
 
+ImVec4 to_imvec4(const Rgba& c) { return {c[0], c[1], c[2], 1.0f}; }
+
+// The collision slice: how many cells ended each way, then every cell that did not end stable.
+void pairs_table(const StabilityMap& m) {
+    if (m.pair_cells.empty()) {
+        ImGui::TextDisabled("No collision cells (the computation was cancelled before them).");
+        return;
+    }
+    std::array<int, static_cast<std::size_t>(StabilityOutcome::overlap) + 1> counts{};
+    for (const StabilityCell& c : m.pair_cells) ++counts[static_cast<std::size_t>(c.outcome)];
+    ImGui::TextWrapped("Two balls thrown at each other across the room (ball 0 of radius %.2g of the room, ball 1 1 or 10 "
+                       "times its radius and 1/1000 to 1000 times its mass), over dt, speed and restitution:",
+                       m.pair_cells.front().c.radius_fraction);
+    for (std::size_t o = 0; o < counts.size(); ++o) {
+        if (o > 0) ImGui::SameLine();
+        ImGui::ColorButton(to_string(static_cast<StabilityOutcome>(o)), to_imvec4(outcome_color(static_cast<StabilityOutcome>(o))),
+                           ImGuiColorEditFlags_NoTooltip, ImVec2(ImGui::GetFontSize(), ImGui::GetFontSize()));
+        ImGui::SameLine();
+        ImGui::Text("%s %d", to_string(static_cast<StabilityOutcome>(o)), counts[o]);
+    }
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY |
+                                  ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("##pairs", 8, flags, ImVec2(0, ImGui::GetContentRegionAvail().y))) return;
+    ImGui::TableSetupScrollFreeze(0, 1);
+    for (const char* h : {"dt (s)", "speed (m/s)", "e", "radii", "masses", "outcome", "warned", "what happened"})
+        ImGui::TableSetupColumn(h);
+    ImGui::TableHeadersRow();
+    for (const StabilityCell& c : m.pair_cells) {
+        if (c.outcome == StabilityOutcome::stable) continue;
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", c.c.dt);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", c.c.speed);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2g", c.c.restitution);
+        ImGui::TableNextColumn();
+        ImGui::Text("1 : %.3g", c.c.pair_radius_ratio);
+        ImGui::TableNextColumn();
+        ImGui::Text("1 : %.3g", c.c.pair_mass_ratio);
+        ImGui::TableNextColumn();
+        ImGui::TextColored(to_imvec4(outcome_color(c.outcome)), "%s", to_string(c.outcome));
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(c.collision_warned ? "yes" : "no");
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(c.detail.c_str());
+    }
+    ImGui::EndTable();
+}
+
 }  // namespace
 
 void draw_stability_tab(LabSession& s) {
@@ -142,8 +204,9 @@ void draw_stability_tab(LabSession& s) {
         ImGui::ProgressBar(static_cast<float>(p.stability.progress()), ImVec2(ImGui::GetFontSize() * 8.0f, 0));
         ImGui::SameLine();
         if (ImGui::Button("Cancel##stab")) p.stability.cancel();
-    } else if (ImGui::Button("Compute map")) {
-        start_map(s, p);
+    } else {
+        if (ImGui::Button("Compute map")) start_map(s, p);
+        note_item_rect(s, "stability.compute");
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("One particle launched at 5 m/s from the room's centre (e = 0.5) for every dt and linear-drag\n"
@@ -168,10 +231,15 @@ void draw_stability_tab(LabSession& s) {
     ImGui::SameLine();
     ImGui::RadioButton("limits##stab", &p.stability_view, 1);
     ImGui::SameLine();
+    ImGui::RadioButton("collisions##stab", &p.stability_view, 2);
+    note_item_rect(s, "stability.collisions");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pairs thrown at each other on this method: where they end deep in each other or pass through");
+    ImGui::SameLine();
     ImGui::Checkbox("own window##stab", &p.stability_window);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the map in a window of its own (movable, resizable)");
     if (p.stability_view == 0) draw_map(s, m, -1.0f);
-    else limits_table(m);
+    else if (p.stability_view == 1) limits_table(m);
+    else pairs_table(m);
     if (!p.stability_window) return;
     ImGui::SetNextWindowSize(ImVec2(760, 520), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Stability map", &p.stability_window)) draw_map(s, m, -1.0f);

@@ -27,17 +27,10 @@ namespace pl {
 namespace {
 
 Model pair_model(const StabilityBase& base, const StabilityCase& c) {
-    Model m;
-    m.label = "stability pair";
-    m.room = base.room;
-    m.world.gravity = base.gravity;
-    m.contact = base.contact;
-    m.contact.restitution = c.restitution;
+    Model m = stability_model(base, c, "stability pair");
     m.collisions.enabled = true;
     m.collisions.restitution = c.restitution;
     m.collisions.friction = base.contact.friction;
-    m.integrator.method = c.method;
-    m.integrator.dt = c.dt;
     return m;
 }
 
@@ -59,12 +52,6 @@ std::vector<ParticleSpec> pair_particles(const StabilityBase& base, const Stabil
     return {a, b};
 }
 
-std::uint64_t steps_for(const StabilityCase& c, const StabilityRunLimits& limits) {
-    const double wanted = std::ceil(limits.max_duration_s / c.dt);
-    return static_cast<std::uint64_t>(
-        std::clamp(wanted, static_cast<double>(limits.min_steps), static_cast<double>(limits.max_steps)));
-}
-
 }  // namespace
 
 StabilityCell classify_pair(const StabilityBase& base, const StabilityCase& c, const StabilityRunLimits& limits) {
@@ -73,19 +60,11 @@ StabilityCell classify_pair(const StabilityBase& base, const StabilityCase& c, c
     const Model m = pair_model(base, c);
     Simulation sim(m, pair_particles(base, c));
     sim.set_threads(1);  // cells already run in parallel
-    const RoomBounds room(base.room);
-    const double slack = 1e-9 * std::max({base.room.size.x, base.room.size.y, base.room.size.z});
     const double e0 = total_energy(sim.state(), base.gravity, base.room).total_mechanical();
     const double g = glm::length(base.gravity);
     const double energy_scale = std::max(e0, (base.mass * (1.0 + c.pair_mass_ratio)) * g * 1e-3);
     cell.max_energy_ratio = 1.0;
-    auto finish = [&](StabilityOutcome o, std::string detail) {
-        cell.outcome = o;
-        cell.detail = std::move(detail);
-        cell.steps = sim.step_count();
-        cell.simulated_s = sim.time();
-        return cell;
-    };
+    auto finish = [&](StabilityOutcome o, std::string detail) { return finish_cell(cell, sim, o, std::move(detail)); };
     auto warned = [&] {
         return std::any_of(sim.warnings().begin(), sim.warnings().end(),
                            [](const Warning& w) {
@@ -97,21 +76,14 @@ StabilityCell classify_pair(const StabilityBase& base, const StabilityCase& c, c
     // Level: neither above nor beside the other by a contact distance (ball 1 starts at +x).
     const auto level = [contact](const Vec3& gap) { return std::abs(gap.y) < contact && std::abs(gap.z) < contact; };
     Vec3 last_gap = s.position(1) - s.position(0);
-    const std::uint64_t steps = steps_for(c, limits);
+    const std::uint64_t steps = stability_steps(c, limits);
     for (std::uint64_t k = 0; k < steps; ++k) {
         sim.step();
         for (std::uint32_t i = 0; i < 2; ++i) {
             if (s.frozen[i])
                 return finish(StabilityOutcome::nan, fmt::format("t = {:.6g} s: ball {} became non-finite", sim.time(), i));
-            for (int w = 0; w < wall_count; ++w) {
-                const double d = room.distance(w, s.position(i), s.radius[i]);
-                if (d + s.radius[i] < -slack)
-                    return finish(StabilityOutcome::tunnelled, fmt::format("t = {:.6g} s: ball {}'s centre {:.3g} m beyond wall {}",
-                                                                           sim.time(), i, -(d + s.radius[i]), wall_name(w)));
-                if (d < -slack)
-                    return finish(StabilityOutcome::escaped, fmt::format("t = {:.6g} s: ball {} {:.3g} m into wall {}",
-                                                                         sim.time(), i, -d, wall_name(w)));
-            }
+            if (std::optional<WallOutcome> w = wall_outcome(base.room, s.position(i), s.radius[i], sim.time(), fmt::format("ball {}", i)))
+                return finish(w->outcome, std::move(w->detail));
         }
         const Vec3 gap = s.position(1) - s.position(0);
         if (level(last_gap) && level(gap) && gap.x * last_gap.x < 0.0) {
@@ -129,10 +101,8 @@ StabilityCell classify_pair(const StabilityBase& base, const StabilityCase& c, c
                                       cell.collision_warned ? "warned" : "not warned"));
         }
         const double energy = total_energy(s, base.gravity, base.room).total_mechanical();
-        cell.max_energy_ratio = std::max(cell.max_energy_ratio, e0 > 0.0 ? energy / e0 : 1.0);
-        if (energy > e0 + stability_energy_tolerance * energy_scale)
-            return finish(StabilityOutcome::energy_growth,
-                          fmt::format("t = {:.6g} s: KE + PE = {:.4g} J, E0 = {:.4g} J", sim.time(), energy, e0));
+        if (std::optional<std::string> grown = energy_grown(cell, energy, e0, energy_scale, sim.time()))
+            return finish(StabilityOutcome::energy_growth, std::move(*grown));
     }
     cell.collision_warned = warned();
     return finish(StabilityOutcome::stable, "");

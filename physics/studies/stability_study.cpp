@@ -85,6 +85,53 @@ StabilityBase stability_base(const Scene& scene) {
 
 Vec3 stability_launch_direction() { return glm::normalize(Vec3(1.0, 1.0, 0.5)); }
 
+Model stability_model(const StabilityBase& base, const StabilityCase& c, const char* label) {
+    Model m;
+    m.label = label;
+    m.room = base.room;
+    m.world.gravity = base.gravity;
+    m.contact = base.contact;
+    m.contact.restitution = c.restitution;
+    m.integrator.method = c.method;
+    m.integrator.dt = c.dt;
+    return m;
+}
+
+std::uint64_t stability_steps(const StabilityCase& c, const StabilityRunLimits& limits) {
+    const double wanted = std::ceil(limits.max_duration_s / c.dt);
+    return static_cast<std::uint64_t>(
+        std::clamp(wanted, static_cast<double>(limits.min_steps), static_cast<double>(limits.max_steps)));
+}
+
+std::optional<WallOutcome> wall_outcome(const Room& room, const Vec3& x, double radius, double t, const std::string& what) {
+    const RoomBounds bounds(room);
+    const double slack = 1e-9 * std::max({room.size.x, room.size.y, room.size.z});
+    for (int w = 0; w < wall_count; ++w) {
+        const double d = bounds.distance(w, x, radius);
+        if (d + radius < -slack)
+            return WallOutcome{StabilityOutcome::tunnelled,
+                               fmt::format("t = {:.6g} s: {}'s centre {:.3g} m beyond wall {}", t, what, -(d + radius), wall_name(w))};
+        if (d < -slack)
+            return WallOutcome{StabilityOutcome::escaped, fmt::format("t = {:.6g} s: {} {:.3g} m into wall {}", t, what, -d, wall_name(w))};
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> energy_grown(StabilityCell& cell, double energy, double e0, double scale, double t) {
+    cell.max_energy_ratio = std::max(cell.max_energy_ratio, e0 > 0.0 ? energy / e0 : 1.0);
+    if (energy > e0 + stability_energy_tolerance * scale)
+        return fmt::format("t = {:.6g} s: KE + PE = {:.4g} J, E0 = {:.4g} J", t, energy, e0);
+    return std::nullopt;
+}
+
+StabilityCell finish_cell(StabilityCell cell, const Simulation& sim, StabilityOutcome o, std::string detail) {
+    cell.outcome = o;
+    cell.detail = std::move(detail);
+    cell.steps = sim.step_count();
+    cell.simulated_s = sim.time();
+    return cell;
+}
+
 namespace {
 
 // Upper bound on the time a particle launched with `speed` from height `height` over the floor
@@ -109,25 +156,16 @@ StabilityCell classify_stability(const StabilityBase& base, const StabilityCase&
     p.position = base.room.center;
     p.velocity = c.speed * stability_launch_direction();
 
-    Model m;
-    m.label = "stability";
-    m.room = base.room;
-    m.world.gravity = base.gravity;
-    m.contact = base.contact;
-    m.contact.restitution = c.restitution;
+    Model m = stability_model(base, c, "stability");
     if (c.stiffness > 0.0) {
         m.drag.model = DragModel::linear;
         m.drag.linear_b = c.stiffness * base.mass;
     }
-    m.integrator.method = c.method;
-    m.integrator.dt = c.dt;
 
     const double g = glm::length(base.gravity);
     const double e0 = kinetic_energy(p.mass, p.velocity) + potential_energy(base.gravity, base.room, p.mass, p.position);
     const double energy_scale = std::max(e0, p.mass * g * 1e-3);
-    const double steps_wanted = std::ceil(limits.max_duration_s / c.dt);
-    auto steps = static_cast<std::uint64_t>(
-        std::clamp(steps_wanted, static_cast<double>(limits.min_steps), static_cast<double>(limits.max_steps)));
+    std::uint64_t steps = stability_steps(c, limits);
 
     // Floor walls: those gravity presses a particle against.
     std::uint8_t floor_mask = 0;
@@ -152,35 +190,18 @@ StabilityCell classify_stability(const StabilityBase& base, const StabilityCase&
 
     Simulation sim(m, {p});
     sim.set_threads(1);  // cells already run in parallel
-    const RoomBounds room(base.room);
-    const double slack = 1e-9 * std::max({base.room.size.x, base.room.size.y, base.room.size.z});
     cell.max_energy_ratio = 1.0;
-    auto finish = [&](StabilityOutcome o, std::string detail) {
-        cell.outcome = o;
-        cell.detail = std::move(detail);
-        cell.steps = sim.step_count();
-        cell.simulated_s = sim.time();
-        return cell;
-    };
+    auto finish = [&](StabilityOutcome o, std::string detail) { return finish_cell(cell, sim, o, std::move(detail)); };
     for (std::uint64_t k = 0; k < steps; ++k) {
         sim.step();
         const ParticleState& s = sim.state();
         if (s.frozen[0]) return finish(StabilityOutcome::nan, fmt::format("t = {:.6g} s: state became non-finite", sim.time()));
         const Vec3 x = s.position(0), v = s.velocity(0);
-        for (int w = 0; w < wall_count; ++w) {
-            const double d = room.distance(w, x, p.radius);
-            if (d + p.radius < -slack)
-                return finish(StabilityOutcome::tunnelled,
-                              fmt::format("t = {:.6g} s: centre {:.3g} m beyond wall {}", sim.time(), -(d + p.radius), wall_name(w)));
-            if (d < -slack)
-                return finish(StabilityOutcome::escaped,
-                              fmt::format("t = {:.6g} s: sphere {:.3g} m into wall {}", sim.time(), -d, wall_name(w)));
-        }
+        if (std::optional<WallOutcome> w = wall_outcome(base.room, x, p.radius, sim.time(), "sphere"))
+            return finish(w->outcome, std::move(w->detail));
         const double energy = kinetic_energy(p.mass, v) + potential_energy(base.gravity, base.room, p.mass, x);
-        cell.max_energy_ratio = std::max(cell.max_energy_ratio, e0 > 0.0 ? energy / e0 : 1.0);
-        if (energy > e0 + stability_energy_tolerance * energy_scale)
-            return finish(StabilityOutcome::energy_growth,
-                          fmt::format("t = {:.6g} s: KE + PE = {:.4g} J, E0 = {:.4g} J", sim.time(), energy, e0));
+        if (std::optional<std::string> grown = energy_grown(cell, energy, e0, energy_scale, sim.time()))
+            return finish(StabilityOutcome::energy_growth, std::move(*grown));
     }
     if (cell.jitter_checked) {
         for (const Event& e : sim.events()) {

@@ -16,6 +16,8 @@
 
 namespace pl {
 
+class Simulation;
+
 enum class StabilityOutcome : std::uint8_t {
     stable,
     energy_growth,  // KE + PE rose above E0 by more than energy_tolerance (no energy source here)
@@ -103,6 +105,26 @@ StabilityBase default_stability_base();  // the seed's 2 m cube room
 StabilityCell classify_stability(const StabilityBase& base, const StabilityCase& c,
                                  const StabilityRunLimits& limits = {});
 StabilityCell classify_pair(const StabilityBase& base, const StabilityCase& c, const StabilityRunLimits& limits = {});
+
+// Shared by the classifiers. The model of a cell: the base's room, gravity and contact, the
+// cell's restitution (at the walls), method and dt; no drag, no collisions.
+Model stability_model(const StabilityBase& base, const StabilityCase& c, const char* label);
+// The steps a cell runs before any lengthening for the rest bound:
+// ceil(max_duration_s / dt) within [min_steps, max_steps].
+std::uint64_t stability_steps(const StabilityCase& c, const StabilityRunLimits& limits);
+// A sphere at `x` against the room's walls at time `t`: tunnelled (its centre beyond a wall) or
+// escaped (the sphere into one), by more than round-off of the room's size; `what` names the
+// particle in the detail. Nothing when it is inside.
+struct WallOutcome {
+    StabilityOutcome outcome;
+    std::string detail;
+};
+std::optional<WallOutcome> wall_outcome(const Room& room, const Vec3& x, double radius, double t, const std::string& what);
+// Keeps the largest energy / e0 in `cell`; when `energy` exceeds e0 by stability_energy_tolerance
+// of `scale`, what was seen.
+std::optional<std::string> energy_grown(StabilityCell& cell, double energy, double e0, double scale, double t);
+// The cell as it ended: its outcome, what was seen, and how far `sim` ran.
+StabilityCell finish_cell(StabilityCell cell, const Simulation& sim, StabilityOutcome o, std::string detail);
 
 struct StabilityLimit {
     Method method = Method::semi_implicit_euler;

@@ -33,22 +33,19 @@ void SplatRenderer::upload() {
     texture_h_ = image_.height;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, depth_.get());
-    if (resized) {
-        texture_parameters();
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, texture_w_, texture_h_, 0, GL_RED, GL_FLOAT, image_.depth.data());
-    } else {
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, texture_w_, texture_h_, GL_RED, GL_FLOAT, image_.depth.data());
-    }
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, color_.get());
-    if (resized) {
-        texture_parameters();
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, texture_w_, texture_h_, 0, GL_RGBA, GL_UNSIGNED_BYTE, image_.rgba.data());
-    } else {
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, texture_w_, texture_h_, GL_RGBA, GL_UNSIGNED_BYTE, image_.rgba.data());
-    }
+    // Each image into its texture unit: a new storage when the pane's size changed, else in place.
+    auto load = [&](GLenum unit, const GlTexture& texture, GLint internal, GLenum format, GLenum type, const void* pixels) {
+        glActiveTexture(unit);
+        glBindTexture(GL_TEXTURE_2D, texture.get());
+        if (resized) {
+            texture_parameters();
+            glTexImage2D(GL_TEXTURE_2D, 0, internal, texture_w_, texture_h_, 0, format, type, pixels);
+        } else {
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, texture_w_, texture_h_, format, type, pixels);
+        }
+    };
+    load(GL_TEXTURE1, depth_, GL_R32F, GL_RED, GL_FLOAT, image_.depth.data());
+    load(GL_TEXTURE0, color_, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, image_.rgba.data());
 }
 
 void SplatRenderer::draw(const std::vector<SphereInstance>& instances, const CameraMatrices& camera, int x, int y,

@@ -157,6 +157,31 @@ nlohmann::json advice_json(const ui::LabSession& s) {
     return j;
 }
 
+// The Stability tab's last result: the map's method, its cell count, the view shown, and the
+// collision slice's cells by outcome with how many of the unstable ones were warned.
+nlohmann::json stability_json(const ui::LabSession& s) {
+    nlohmann::json j = {{"running", false}, {"view", 0}};
+    if (!s.panels) return j;
+    j["running"] = s.panels->stability.running();
+    j["view"] = s.panels->stability_view;
+    const ui::StabilityMap* m = s.panels->stability.result() ? &*s.panels->stability.result() : nullptr;
+    if (!m) return j;
+    j["method"] = to_string(m->settings.method);
+    j["map_cells"] = m->cells.size();
+    nlohmann::json outcomes = nlohmann::json::object();
+    std::size_t unstable = 0, warned = 0;
+    for (const StabilityCell& c : m->pair_cells) {
+        outcomes[to_string(c.outcome)] = outcomes.value(to_string(c.outcome), 0) + 1;
+        if (c.outcome == StabilityOutcome::stable) continue;
+        ++unstable;
+        warned += c.collision_warned ? 1 : 0;
+    }
+    j["pair_outcomes"] = outcomes;
+    j["pair_unstable"] = unstable;
+    j["pair_unstable_warned"] = warned;
+    return j;
+}
+
 nlohmann::json file_dialog_json(const ui::LabSession& s) {
     if (!s.panels || !s.panels->file_dialog.visible) return nullptr;
     const ui::FileDialog& d = s.panels->file_dialog;
@@ -253,6 +278,7 @@ std::string write_state_dump(const std::filesystem::path& file, const ui::LabSes
     for (const auto& [label, x] : sweep.best) best.push_back({{"series", label}, {"x", x}});
     j["sweep"] = {{"running", sweep.running}, {"points", sweep.points}, {"done", sweep.done}, {"best", best}};
     j["advice"] = advice_json(s);
+    j["stability"] = stability_json(s);
     j["t"] = s.experiment ? s.experiment->time() : 0.0;
     j["base_steps"] = s.experiment ? s.experiment->base_steps() : 0;
     nlohmann::json variants = nlohmann::json::array();
