@@ -219,13 +219,16 @@ void CollisionPass::remove_overlaps(ParticleState& s, const Model& m) {
 
 void CollisionPass::note_deep_overlap(const Pair& p, double contact, double distance) {
     // Only the step's own motion counts: a pair the step drove in from less than half the limit
-    // (apart at its start, or touching and driven in by a ball behind it), neither of whose balls
+    // (apart at its start, or touching and driven in by a ball behind it), or deeper by more than
+    // half the limit than it began (a chain driven into a wall sinks over several steps), neither of whose balls
     // this removal has moved yet (opening a crowd pushes balls into their neighbours for a step);
     // never an emitter's overlaps, deep from the start, being opened.
     const double share = (contact - distance) / contact;
-    if (share > warn_overlap && stamp_[p.a] != corrected && stamp_[p.b] != corrected &&
-        glm::distance(start_[p.a], start_[p.b]) > (1.0 - 0.5 * warn_overlap) * contact)
-        deep_overlaps_.push_back({p.a, p.b, share});
+    if (share > warn_overlap && stamp_[p.a] != corrected && stamp_[p.b] != corrected) {
+        const double start_share = 1.0 - glm::distance(start_[p.a], start_[p.b]) / contact;
+        if (start_share < 0.5 * warn_overlap || share > start_share + 0.5 * warn_overlap)
+            deep_overlaps_.push_back({p.a, p.b, share});
+    }
 }
 
 void CollisionPass::hold_sleepers(ParticleState& s) {

@@ -48,8 +48,8 @@ public:
     static constexpr double correction_share = 0.8;
     static constexpr double max_correction = 0.2;
     static constexpr double allowed_overlap = 1e-4;
-    // A pair the step drove past this share of its contact distance, from less than half of it,
-    // is reported (deep_overlaps()): a meeting the pass could not follow (a ball that struck a
+    // A pair the step drove past this share of its contact distance, from less than half of it or
+    // deeper by more than half of it than it began, is reported (deep_overlaps()): a meeting the pass could not follow (a ball that struck a
     // wall and another ball in one step, whose path was not straight; a light ball a heavy one
     // drove into a wall faster than the solver could stop it); never a settling pile (below 1%)
     // or an emitter's overlaps being opened (deep from the start).
