@@ -146,7 +146,7 @@ void pairs_table(const StabilityMap& m) {
         ImGui::TextDisabled("No collision cells (the computation was cancelled before them).");
         return;
     }
-    std::array<int, static_cast<std::size_t>(StabilityOutcome::overlap) + 1> counts{};
+    std::array<int, stability_outcome_count> counts{};
     for (const StabilityCell& c : m.pair_cells) ++counts[static_cast<std::size_t>(c.outcome)];
     ImGui::TextWrapped("Two balls thrown at each other across the room (ball 0 of radius %.2g of the room, ball 1 1 or 10 "
                        "times its radius and 1/1000 to 1000 times its mass), over dt, speed and restitution:",

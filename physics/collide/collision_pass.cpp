@@ -226,7 +226,7 @@ void CollisionPass::note_deep_overlap(const Pair& p, double contact, double dist
     const double share = (contact - distance) / contact;
     if (share > warn_overlap && stamp_[p.a] != corrected && stamp_[p.b] != corrected) {
         const double start_share = 1.0 - glm::distance(start_[p.a], start_[p.b]) / contact;
-        if (start_share < 0.5 * warn_overlap || share > start_share + 0.5 * warn_overlap)
+        if (start_share < apart_share || share > start_share + apart_share)
             deep_overlaps_.push_back({p.a, p.b, share});
     }
 }
@@ -437,7 +437,7 @@ std::uint64_t CollisionPass::end_step(ParticleState& s, const Model& m, double h
         if (islands_.asleep()[i]) islands_.wake(i);
     islands_.update(s, solver_.contacts(), m.contact.rest_speed, h, threads);
     crossings_.clear();
-    find_crossings(pairs_, start_, s, islands_.asleep(), 0.5 * warn_overlap, crossings_);
+    find_crossings(pairs_, start_, s, islands_.asleep(), apart_share, crossings_);
     return impacts;
 }
 

@@ -54,6 +54,9 @@ public:
     // drove into a wall faster than the solver could stop it); never a settling pile (below 1%)
     // or an emitter's overlaps being opened (deep from the start).
     static constexpr double warn_overlap = 0.1;
+    // A pair counts as apart at a step's start while it overlaps by less than this share of its
+    // contact distance (half the limit): the overlap warning's and the crossing check's start.
+    static constexpr double apart_share = 0.5 * warn_overlap;
 
     explicit CollisionPass(std::size_t particles);
 

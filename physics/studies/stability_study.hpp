@@ -30,6 +30,7 @@ enum class StabilityOutcome : std::uint8_t {
     overlap,        // a pair: a step left the two balls deeper in each other than
                     // collision_overlap_limit of their contact distance
 };
+constexpr std::size_t stability_outcome_count = static_cast<std::size_t>(StabilityOutcome::overlap) + 1;
 const char* to_string(StabilityOutcome o);
 
 // One cell of the grid.

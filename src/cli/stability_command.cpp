@@ -74,18 +74,16 @@ Json cell_json(const StabilityCell& c) {
     return j;
 }
 
-constexpr std::size_t outcome_count = static_cast<std::size_t>(StabilityOutcome::overlap) + 1;
-
 // Per method: the cells and how many of each outcome, and how many `flagged` (a last column).
 template <typename Flag>
 void outcome_counts(const std::vector<StabilityCell>& cells, const std::vector<Method>& methods, const char* flag_name,
                     Flag flagged) {
     Table s;
     s.header = {"method", "cells"};
-    for (std::size_t o = 0; o < outcome_count; ++o) s.header.push_back(to_string(static_cast<StabilityOutcome>(o)));
+    for (std::size_t o = 0; o < stability_outcome_count; ++o) s.header.push_back(to_string(static_cast<StabilityOutcome>(o)));
     s.header.push_back(flag_name);
     for (Method m : methods) {
-        std::array<int, outcome_count> n{};
+        std::array<int, stability_outcome_count> n{};
         int count = 0, flags = 0;
         for (const StabilityCell& c : cells)
             if (c.c.method == m) {
