@@ -73,6 +73,36 @@ TEST(TickLabels, DistinctOnASpanOfRoundOffAroundALargeValue) {
     }
 }
 
+// The same axes labelled as an offset plus short labels: each label at most 8 characters, and
+// offset + label gives the tick's value to within a tenth of a step. Ordinary axes keep their
+// plain labels.
+TEST(TickLabels, AnAxisOfRoundOffReadsAsAnOffsetPlusShortLabels) {
+    const std::pair<double, double> axes[] = {{87.469401234, 1e-5},   {87.469401234, 1e-7},  {87.469401234, 1e-9},
+                                              {87.469401234, 1e-11},  {-87.469401234, 1e-9}, {2.5e7, 1e-1},
+                                              {2.5e7, 1e-4},          {0.123456789, 1e-9},   {0.123456789, 1e-12}};
+    for (const auto& [lo, span] : axes) {
+        const Ticks ticks = nice_ticks(lo, lo + span, 4);
+        const TickLabels labels = label_ticks(ticks);
+        SCOPED_TRACE(std::to_string(lo) + " + " + std::to_string(span));
+        ASSERT_FALSE(labels.offset.empty());
+        ASSERT_EQ(labels.labels.size(), ticks.values.size());
+        const double offset = std::stod(labels.offset);
+        for (std::size_t i = 0; i < ticks.values.size(); ++i) {
+            EXPECT_LE(labels.labels[i].size(), 8u) << labels.labels[i];
+            EXPECT_NEAR(offset + std::stod(labels.labels[i]), ticks.values[i], 0.1 * ticks.step) << labels.labels[i];
+            if (i > 0) {
+                EXPECT_NE(labels.labels[i], labels.labels[i - 1]);
+            }
+        }
+    }
+    for (const auto& [lo, hi] : {std::pair{0.0, 10.0}, std::pair{87.4, 87.5}, std::pair{-2.0, 3.0}, std::pair{990.0, 1010.0}}) {
+        const Ticks ticks = nice_ticks(lo, hi, 5);
+        const TickLabels labels = label_ticks(ticks);
+        EXPECT_TRUE(labels.offset.empty()) << lo << " " << labels.offset;
+        for (std::size_t i = 0; i < ticks.values.size(); ++i) EXPECT_EQ(labels.labels[i], format_tick(ticks.values[i], ticks.step));
+    }
+}
+
 TEST(LogTicks, DecadesAndFinerMarksOnShortRanges) {
     const Ticks wide = log_ticks(1e-9, 1e-1);
     EXPECT_EQ(wide.values.size(), 9u);  // 1e-9 ... 1e-1

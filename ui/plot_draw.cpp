@@ -2,6 +2,7 @@
 #include "ui/plot_internal.hpp"
 
 #include <cstdio>
+#include <utility>
 
 namespace pl::ui::plot::detail {
 
@@ -87,10 +88,10 @@ AxisTicks make_ticks(double lo, double hi, float pixels, float pixels_per_tick, 
     }
     const int target = std::max(2, static_cast<int>(pixels / pixels_per_tick));
     const Ticks ticks = nice_ticks(lo, hi, target);
-    for (double v : ticks.values) {
-        t.at.push_back(v);
-        t.labels.push_back(format_tick(v, ticks.step));
-    }
+    TickLabels labels = label_ticks(ticks);
+    t.at = ticks.values;
+    t.labels = std::move(labels.labels);
+    t.offset = std::move(labels.offset);
     return t;
 }
 
@@ -233,6 +234,13 @@ void draw_axes(ImDrawList* dl, const Context& c, const PlotLayout& l, const Axis
         const float tw = ImGui::CalcTextSize(c.x_label.c_str()).x;
         dl->AddText({(f.min.x + f.max.x - tw) * 0.5f, f.max.y + s.line_h + 5.0f}, s.text, c.x_label.c_str());
     }
+    // The offsets the labels add to (plot_math.hpp, label_ticks): the y axis's at the header's
+    // right end, the x axis's at the right end of the x label's row.
+    if (!yt.offset.empty())
+        dl->AddText({f.max.x - ImGui::CalcTextSize(yt.offset.c_str()).x, fmin.y}, s.text, yt.offset.c_str());
+    if (!xt.offset.empty())
+        dl->AddText({f.max.x - ImGui::CalcTextSize(xt.offset.c_str()).x, f.max.y + s.line_h + 5.0f}, s.text,
+                    xt.offset.c_str());
 }
 
 namespace {

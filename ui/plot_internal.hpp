@@ -134,6 +134,7 @@ void mark_coincident(std::vector<Item>& items, double y_per_pixel);
 struct AxisTicks {
     std::vector<double> at;  // in plot coordinates (log10 for log axes)
     std::vector<std::string> labels;
+    std::string offset;  // added to every label, when not empty (label_ticks)
 };
 AxisTicks make_ticks(double lo, double hi, float pixels, float pixels_per_tick, bool log);
 void draw_axes(ImDrawList* dl, const Context& c, const PlotLayout& l, const AxisTicks& xt, const AxisTicks& yt,

@@ -85,6 +85,45 @@ inline std::string format_tick(double value, double step) {
     return buf;
 }
 
+// The labels of a linear axis. Where they would need more than `most_digits` significant digits
+// (an axis that spans round-off around a large value: an elastic gas's energy, 87.4694012340 J
+// +- 1e-11), they read as an offset plus short labels of what each tick adds to it, as
+// matplotlib's ScalarFormatter does ("+87.469401234" at the axis, ticks "0", "2e-12", "4e-12").
+// The offset is the first tick rounded down to a multiple of 100 steps' decade, so the labels
+// keep about three digits and a scrolling axis changes its offset rarely.
+struct TickLabels {
+    std::vector<std::string> labels;  // one per tick
+    std::string offset;               // empty: the labels are the values themselves
+};
+inline TickLabels label_ticks(const Ticks& ticks, int most_digits = 7) {
+    TickLabels out;
+    if (ticks.values.empty()) return out;
+    const double step = ticks.step;
+    double largest = 0.0;
+    for (const double v : ticks.values) largest = std::max(largest, std::abs(v));
+    const int step_exponent = step > 0.0 ? static_cast<int>(std::floor(std::log10(step) + 1e-9)) : 0;
+    const bool offset = step > 0.0 && largest > 0.0 &&
+                        static_cast<int>(std::floor(std::log10(largest))) - step_exponent >= most_digits;
+    if (!offset) {
+        for (const double v : ticks.values) out.labels.push_back(format_tick(v, step));
+        return out;
+    }
+    const int exponent = step_exponent + 2;
+    const double unit = std::pow(10.0, exponent);
+    const double base = std::floor(ticks.values.front() / unit) * unit;
+    for (const double v : ticks.values) out.labels.push_back(format_tick(v - base, step));
+    char buf[48];
+    const int decimals = -exponent;
+    if (std::abs(base) < 1e6 && decimals <= 15) {
+        std::snprintf(buf, sizeof buf, "%+.*f", std::max(decimals, 0), base);
+    } else {
+        const int digits = std::clamp(static_cast<int>(std::floor(std::log10(std::abs(base)))) - exponent, 0, 16);
+        std::snprintf(buf, sizeof buf, "%+.*e", digits, base);
+    }
+    out.offset = buf;
+    return out;
+}
+
 // The y range of data that never changes (lo == hi): the span from zero to the value, so a ball
 // at rest at 0.033 m reads "0 .. 0.04" and not five labels of 0.033, and an exact zero gets
 // [-1, 1] rather than +-1e-9 of rounding noise. Varying data (lo < hi) is left as it is.
