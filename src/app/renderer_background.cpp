@@ -2,7 +2,7 @@
 
 namespace pl::app {
 
-BackgroundRenderer::BackgroundRenderer() : program_(load_program("background")), vao_(make_vertex_array()) {}
+BackgroundRenderer::BackgroundRenderer() : program_(load_program("background", false, "full_viewport")), vao_(make_vertex_array()) {}
 
 void BackgroundRenderer::draw() const {
     program_.use();

@@ -44,11 +44,11 @@ GLuint compile_stage(GLenum stage, const std::filesystem::path& file) {
 
 std::filesystem::path shader_directory() { return data_path("shaders"); }
 
-ShaderProgram load_program(const std::string& name, bool with_geometry) {
+ShaderProgram load_program(const std::string& name, bool with_geometry, const std::string& vertex) {
     const std::filesystem::path dir = shader_directory();
     std::vector<GLuint> stages;
     try {
-        stages.push_back(compile_stage(GL_VERTEX_SHADER, dir / (name + ".vert")));
+        stages.push_back(compile_stage(GL_VERTEX_SHADER, dir / ((vertex.empty() ? name : vertex) + ".vert")));
         if (with_geometry) stages.push_back(compile_stage(GL_GEOMETRY_SHADER, dir / (name + ".geom")));
         stages.push_back(compile_stage(GL_FRAGMENT_SHADER, dir / (name + ".frag")));
     } catch (...) {

@@ -31,8 +31,9 @@ private:
     GlProgram program_;
 };
 
-// Compiles and links `<name>.vert`, `<name>.frag` and, when `with_geometry`, `<name>.geom`.
-// Throws std::runtime_error naming the file and carrying the driver's log on failure.
-ShaderProgram load_program(const std::string& name, bool with_geometry = false);
+// Compiles and links `<name>.vert` (or `<vertex>.vert`, a vertex stage programs share), `<name>.frag`
+// and, when `with_geometry`, `<name>.geom`. Throws std::runtime_error naming the file and carrying
+// the driver's log on failure.
+ShaderProgram load_program(const std::string& name, bool with_geometry = false, const std::string& vertex = {});
 
 }  // namespace pl::app

@@ -19,7 +19,7 @@ void texture_parameters() {
 }  // namespace
 
 SplatRenderer::SplatRenderer()
-    : program_(load_program("splat_composite")), vao_(make_vertex_array()), color_(make_texture()),
+    : program_(load_program("splat_composite", false, "full_viewport")), vao_(make_vertex_array()), color_(make_texture()),
       depth_(make_texture()) {
     program_.use();
     glUniform1i(program_.uniform("u_color"), 0);

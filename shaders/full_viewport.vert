@@ -1,5 +1,6 @@
 #version 330 core
-// Full-viewport triangle from gl_VertexID (no vertex buffer).
+// Full-viewport triangle from gl_VertexID (no vertex buffer), at the far end of the depth range:
+// the background's (which shades by v_height) and the splat image's (which writes its own depth).
 out float v_height;   // 0 at the bottom, 1 at the top
 
 void main() {

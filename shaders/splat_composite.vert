@@ -1,6 +1,0 @@
-#version 330 core
-// Full-viewport triangle from gl_VertexID (no vertex buffer).
-void main() {
-    vec2 p = vec2((gl_VertexID == 1) ? 3.0 : -1.0, (gl_VertexID == 2) ? 3.0 : -1.0);
-    gl_Position = vec4(p, 0.0, 1.0);
-}
