@@ -35,7 +35,8 @@ double shift_inside(ParticleState& s, const Model& m, const RoomBounds& room, st
 
 CollisionPass::CollisionPass(std::size_t particles)
     : start_(particles), start_velocity_(particles), start_spin_(particles), path_start_(particles), path_rate_(particles), path_time_(particles),
-      strikes_(particles, 0), stamp_(particles, 0), touched_(particles, 0), listed_(particles, 0), row_(particles, 0), islands_(particles) {
+      strikes_(particles, 0), stamp_(particles, 0), touched_(particles, 0), listed_(particles, 0), row_(particles, 0),
+      added_head_(particles, no_link), cover_of_(particles, 0), islands_(particles) {
     boxes_.resize(particles);
 }
 
@@ -303,6 +304,8 @@ void CollisionPass::index_pairs() {
     // pairs, not the particles (a row per particle made this a serial pass over all of them).
     // Rows of particles in no pair are stale and never read.
     const auto rows = static_cast<std::uint32_t>(pair_particles_.size());
+    rows_ = rows;
+    broad_pairs_ = pairs_.size();
     for (std::uint32_t r = 0; r < rows; ++r) row_[pair_particles_[r]] = r;
     pair_start_.assign(std::size_t{rows} + 1, 0);
     for (const Pair& p : pairs_) {
@@ -325,12 +328,16 @@ void CollisionPass::queue_pairs_of(const std::vector<std::uint32_t>& resolved, s
     // others keep their paths, and their first contacts are in the queue already. A pair of the
     // two struck particles is queued once (`event` stamps it).
     queue_.clear();
-    for (const std::uint32_t i : resolved)
-        for (std::uint32_t k = pair_start_[row_[i]]; k < pair_start_[row_[i] + 1]; ++k)
-            if (pair_queued_[pair_of_[k]] != event) {
-                pair_queued_[pair_of_[k]] = event;
-                queue_.push_back(pair_of_[k]);
-            }
+    auto queue = [&](std::uint32_t pair) {
+        if (pair_queued_[pair] == event) return;
+        pair_queued_[pair] = event;
+        queue_.push_back(pair);
+    };
+    for (const std::uint32_t i : resolved) {
+        if (has_row(i))
+            for (std::uint32_t k = pair_start_[row_[i]]; k < pair_start_[row_[i] + 1]; ++k) queue(pair_of_[k]);
+        for_added_pairs_of(i, queue);
+    }
 }
 
 bool CollisionPass::still_current(const Hit& hit) const {
@@ -374,14 +381,17 @@ std::uint64_t CollisionPass::resolve_impacts(ParticleState& s, const Model& m, d
             resolved_.push_back(c.b);
             ++impulses;
         }
-        // The struck particles' paths bent at c.t: their pairs' first contacts from then on, and
-        // the wall each now runs into.
+        // The struck particles' paths bent at c.t: their pairs' first contacts from then on (with
+        // the particles a new path reaches outside its swept box paired first), and the wall
+        // each now runs into.
+        for (const std::uint32_t i : resolved_) reach_new_path(s, i, h);
         queue_pairs_of(resolved_, event++);
         const std::size_t from = hits_.size();
         append_hits(s, h, spin, impact, threads);
         find_wall_hits(s, m, h, impact);
         queue_hits(from);
     }
+    end_reach();
     for (const std::uint32_t i : moved_)
         if (strikes_[i] >= max_strikes) caught_.push_back(i);
     for (const std::uint32_t i : moved_) strikes_[i] = 0;  // only struck particles carry strikes

@@ -57,6 +57,9 @@ public:
     // A pair counts as apart at a step's start while it overlaps by less than this share of its
     // contact distance (half the limit): the overlap warning's and the crossing check's start.
     static constexpr double apart_share = 0.5 * warn_overlap;
+    // The skin, in radii, around a struck particle's new path when the particles it may reach
+    // are looked up (path_reach.cpp).
+    static constexpr double reach_skin = 0.02;
 
     explicit CollisionPass(std::size_t particles);
 
@@ -80,6 +83,9 @@ public:
     const std::vector<std::uint32_t>& moved() const { return moved_; }
     bool moved(std::uint32_t i) const { return touched_[i] != 0; }  // i is in moved()
     const std::vector<Pair>& candidates() const { return pairs_; }
+    // Pairs the impacts added since the start: struck particles whose new paths left the swept
+    // boxes they were paired by (path_reach.cpp).
+    std::uint64_t added_pairs() const { return added_total_; }
     const PairCache& pair_cache() const { return pair_cache_; }
     bool propagated_shock() const { return solver_.propagated_shock(); }  // last step (contact_shock.cpp)
     const std::vector<SolverContact>& contacts() const { return solver_.contacts(); }
@@ -125,6 +131,17 @@ private:
     std::uint64_t resolve_impacts(ParticleState& s, const Model& m, double h, double impact, std::size_t threads);
     void list_pair_particles();
     void index_pairs();
+    // A struck particle's new path may leave the swept box the broad phase paired it by: the
+    // particles that path may meet are paired with it then (path_reach.cpp).
+    void reach_new_path(const ParticleState& s, std::uint32_t i, double h);
+    void add_pair(const ParticleState& s, std::uint32_t i, std::uint32_t j, double h);
+    bool paired(std::uint32_t i, std::uint32_t j) const;
+    bool has_row(std::uint32_t i) const { return row_[i] < rows_ && pair_particles_[row_[i]] == i; }
+    template <class Visit>
+    void for_added_pairs_of(std::uint32_t i, Visit&& visit) const {
+        for (std::uint32_t l = added_head_[i]; l != no_link; l = added_links_[l].next) visit(added_links_[l].pair);
+    }
+    void end_reach();  // after the impacts: pairs_ in order again, the step's lists cleared
     void queue_pairs_of(const std::vector<std::uint32_t>& resolved, std::uint32_t event);
     void queue_hits(std::size_t from);
     // Particle i takes dv (and dw) at time t of the step: its path bends there, and the solver's
@@ -166,6 +183,19 @@ private:
     // particles just struck, and each particle's pairs to find them (index_pairs).
     std::vector<std::uint32_t> queue_, resolved_, pair_start_, pair_fill_, pair_of_, pair_queued_;
     std::vector<std::uint32_t> row_;     // per particle: its row of pairs (valid for pair_particles_)
+    std::uint32_t rows_ = 0;             // rows of index_pairs (the particles of the broad phase's pairs)
+    std::size_t broad_pairs_ = 0;        // the broad phase's pairs, at index_pairs (the impacts add more)
+    // The pairs the impacts added (reach_new_path): per particle the head of a list of its added
+    // pairs, and the boxes that the paths of the particles whose paths left their swept boxes
+    // covered this step (per particle 1 + its place in covers_, or 0).
+    static constexpr std::uint32_t no_link = 0xffffffffu;
+    struct AddedLink {
+        std::uint32_t pair, next;
+    };
+    std::vector<std::uint32_t> added_head_, cover_of_, added_particles_, reached_, near_;
+    std::vector<AddedLink> added_links_;
+    std::vector<SweptBox> covers_;
+    std::uint64_t added_total_ = 0;
     std::vector<std::uint32_t> pair_particles_;  // the particles of pairs_, each once (list_pair_particles)
     std::vector<std::vector<Hit>> slice_hits_;  // per slice of pairs, when threaded
     ContactSolver solver_;

@@ -149,6 +149,18 @@ bool PairCache::mend(const SweptBoxes& boxes) {
     return found;
 }
 
+bool PairCache::near(const SweptBox& box, std::vector<std::uint32_t>& out) const {
+    // A grid run this call holds every particle's box of the call (swept, or fat around it). Fat
+    // pairs that served hold the last run's fat boxes, stale for the boxes mended since: those
+    // are looked at one by one (at most most_mended_share of the particles; a few hundred on
+    // the gas between its grid runs).
+    if (calls_ == 0 || !grid_.near(box, out)) return false;
+    if (!ran_grid_)
+        for (const std::uint32_t j : mended_)
+            if (overlap(box, fat_.box[j])) out.push_back(j);
+    return true;
+}
+
 void PairCache::forget_mended() {
     for (const std::uint32_t i : mended_) is_mended_[i] = 0;
     mended_.clear();
@@ -189,10 +201,12 @@ void PairCache::pairs_after_leavers(bool holds, const SweptBoxes& boxes, std::ve
     // `holds`: the fat boxes can serve, and leavers_ lists the boxes out of them.
     ++calls_;
     pairs.clear();
+    ran_grid_ = false;
     if (holds && (leavers_.empty() || (margin_ > 0.0 && mend(boxes)))) {
         ++served_;
         return test_fat_pairs(boxes, pairs, asleep, threads);
     }
+    ran_grid_ = true;
     // Fat boxes that served only the call that made them cost more than they saved (a settling
     // pile: some ball always leaves): no margin for a while.
     if (margin_ > 0.0 && served_ < 2) quiet_until_ = calls_ + quiet_calls;

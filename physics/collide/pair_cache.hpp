@@ -73,6 +73,13 @@ public:
     void find_pairs_watched(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
                             std::size_t threads, bool ids_same);
 
+    // After a call: appends to `out` every particle of the call whose swept box may meet `box`
+    // (a superset: the grid's boxes of the call, or its fat boxes and the ones mended since,
+    // each containing the particle's swept box; each particle may come more than once) and
+    // returns true; or false, appending nothing, when the grid cannot answer (a box spanning
+    // too many of its cells). The collision pass pairs a struck particle's new path with it.
+    bool near(const SweptBox& box, std::vector<std::uint32_t>& out) const;
+
     const BroadPhase& grid() const { return grid_; }
     double margin() const { return margin_; }                       // the largest, of the last grid run
     std::size_t fat_pair_count() const { return fat_pairs_.size(); }  // pairs of fat boxes
@@ -122,6 +129,7 @@ private:
     double margin_ = 0.0;  // the largest margin at the last grid run
     bool valid_ = false;
     bool watched_ = false;  // check() ran since watch()
+    bool ran_grid_ = false;  // the last call ran the grid (else its fat pairs served)
     std::uint64_t calls_ = 0, grid_runs_ = 0, mends_ = 0;
     std::uint64_t served_ = 0;       // calls the fat boxes served (with the one that made them)
     std::uint64_t quiet_until_ = 0;  // no margin before this call
