@@ -65,6 +65,11 @@ inline Ticks log_ticks(double lo, double hi) {
     return ticks;
 }
 
+// The power of ten of a tick step (0 for no step): 2e-12 -> -12, 5 -> 0, 20 -> 1.
+inline int decade_of(double step) {
+    return step > 0.0 ? static_cast<int>(std::floor(std::log10(step) + 1e-9)) : 0;
+}
+
 // A tick label with just enough digits to tell neighbouring ticks `step` apart: fixed notation
 // for ordinary magnitudes (however fine the step: 87.4694012 J on an axis that spans round-off),
 // scientific for very small or very large values. Digits stop where a double has none left.
@@ -72,7 +77,7 @@ inline std::string format_tick(double value, double step) {
     char buf[48];
     if (value == 0.0) return "0";
     const double mag = std::abs(value);
-    const int step_exponent = step > 0.0 ? static_cast<int>(std::floor(std::log10(step) + 1e-9)) : 0;
+    const int step_exponent = decade_of(step);
     if (step > 0.0 && mag < 1e6 && (step >= 1e-4 || mag >= 1e-3)) {
         const int decimals = std::clamp(-step_exponent, 0, 15);
         std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
@@ -101,7 +106,7 @@ inline TickLabels label_ticks(const Ticks& ticks, int most_digits = 7) {
     const double step = ticks.step;
     double largest = 0.0;
     for (const double v : ticks.values) largest = std::max(largest, std::abs(v));
-    const int step_exponent = step > 0.0 ? static_cast<int>(std::floor(std::log10(step) + 1e-9)) : 0;
+    const int step_exponent = decade_of(step);
     const bool offset = step > 0.0 && largest > 0.0 &&
                         static_cast<int>(std::floor(std::log10(largest))) - step_exponent >= most_digits;
     if (!offset) {
@@ -112,14 +117,9 @@ inline TickLabels label_ticks(const Ticks& ticks, int most_digits = 7) {
     const double unit = std::pow(10.0, exponent);
     const double base = std::floor(ticks.values.front() / unit) * unit;
     for (const double v : ticks.values) out.labels.push_back(format_tick(v - base, step));
-    char buf[48];
-    const int decimals = -exponent;
-    if (std::abs(base) < 1e6 && decimals <= 15) {
-        std::snprintf(buf, sizeof buf, "%+.*f", std::max(decimals, 0), base);
-    } else {
-        const int digits = std::clamp(static_cast<int>(std::floor(std::log10(std::abs(base)))) - exponent, 0, 16);
-        std::snprintf(buf, sizeof buf, "%+.*e", digits, base);
-    }
+    // The offset with the digits of its own step, signed: "+87.4694012340".
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s%s", base < 0.0 ? "" : "+", format_tick(base, unit).c_str());
     out.offset = buf;
     return out;
 }

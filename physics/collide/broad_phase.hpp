@@ -52,6 +52,12 @@ inline bool overlap(const SweptBox& a, const SweptBox& b) {
            b.lo[2] <= a.hi[2];
 }
 
+// Whether `inner` lies inside `outer` (false where either holds a NaN).
+inline bool contains(const SweptBox& outer, const SweptBox& inner) {
+    return inner.lo[0] >= outer.lo[0] && inner.lo[1] >= outer.lo[1] && inner.lo[2] >= outer.lo[2] &&
+           inner.hi[0] <= outer.hi[0] && inner.hi[1] <= outer.hi[1] && inner.hi[2] <= outer.hi[2];
+}
+
 // Swept boxes, one per particle index (one box in one cache line or two: the broad phase reads
 // them in the order of space, not of the indices); `ids` lists the particles that take part
 // (frozen ones are left out), in increasing order.

@@ -26,9 +26,11 @@
 #include "physics/collide/contact_solver.hpp"
 #include "physics/collide/sleep_islands.hpp"
 #include "physics/model/scene.hpp"
+#include "physics/stepping/contact.hpp"
 #include "physics/stepping/events.hpp"
 #include "physics/stepping/particle_state.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <tuple>
 #include <vector>
@@ -124,6 +126,15 @@ private:
     bool still_current(const Hit& hit) const;
     static constexpr std::uint32_t wall_hit = 0xfffffff0u;
     void build_boxes(const ParticleState& s, std::size_t threads);
+    // The box around a sphere of radius r moving from a to b.
+    static SweptBox box_around(const Vec3& a, const Vec3& b, double r) {
+        SweptBox box;
+        for (int k = 0; k < 3; ++k) {
+            box.lo[k] = std::min(a[k], b[k]) - r;
+            box.hi[k] = std::max(a[k], b[k]) + r;
+        }
+        return box;
+    }
     Vec3 at(std::uint32_t i, double t) const { return path_start_[i] + (t - path_time_[i]) * path_rate_[i]; }
     bool find_hit(const ParticleState& s, const Pair& p, double h, bool spin, double impact, Hit& hit) const;
     void hold_sleepers(ParticleState& s);
@@ -153,7 +164,11 @@ private:
     // against and moves into, appended to hits_, and one such hit resolved.
     void find_wall_hits(const ParticleState& s, const Model& m, double h, double impact);
     bool resolve_wall(ParticleState& s, const Model& m, const Hit& hit, double impact);  // false: no impulse
-    void remove_overlaps(ParticleState& s, const Model& m);
+    // Moves particle i to x; the potential energy that gives it is the contacts' work.
+    static void move_to(ParticleState& s, const Model& m, std::uint32_t i, const Vec3& x);
+    // Moves particle i by `by`, kept inside the room; returns how far it went along `by`.
+    static double shift_inside(ParticleState& s, const Model& m, const RoomBounds& room, std::uint32_t i, const Vec3& by);
+    void remove_overlaps(ParticleState& s, const Model& m);  // overlap_removal.cpp
     void note_deep_overlap(const Pair& p, double contact, double distance);
     void keep_rest_on_walls(ParticleState& s, double impact);
     void touch(std::uint32_t i);

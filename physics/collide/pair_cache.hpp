@@ -66,9 +66,7 @@ public:
         const SweptBox& f = fat_.box[i];
         TaskWatch& watch = task_watch_[task];
         if (slept_[i] && !asleep) watch.holds = false;  // woke: the grid left out its pairs with sleepers
-        if (!(b.lo[0] >= f.lo[0] && b.lo[1] >= f.lo[1] && b.lo[2] >= f.lo[2] && b.hi[0] <= f.hi[0] &&
-              b.hi[1] <= f.hi[1] && b.hi[2] <= f.hi[2]))
-            watch.leavers.push_back(i);
+        if (!contains(f, b)) watch.leavers.push_back(i);
     }
     void find_pairs_watched(const SweptBoxes& boxes, std::vector<Pair>& pairs, const std::uint8_t* asleep,
                             std::size_t threads, bool ids_same);

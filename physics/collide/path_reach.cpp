@@ -21,15 +21,6 @@
 #include <algorithm>
 
 namespace pl::collide {
-namespace {
-
-bool inside(const SweptBox& inner, const SweptBox& outer) {
-    for (int k = 0; k < 3; ++k)
-        if (inner.lo[k] < outer.lo[k] || inner.hi[k] > outer.hi[k]) return false;
-    return true;
-}
-
-}  // namespace
 
 bool CollisionPass::paired(std::uint32_t i, std::uint32_t j) const {
     const Pair p{std::min(i, j), std::max(i, j)};
@@ -64,13 +55,8 @@ void CollisionPass::add_pair(const ParticleState& s, std::uint32_t i, std::uint3
 
 void CollisionPass::reach_new_path(const ParticleState& s, std::uint32_t i, double h) {
     const double r = s.radius[i];
-    const Vec3 from = path_start_[i], to = at(i, h);
-    SweptBox path;
-    for (int k = 0; k < 3; ++k) {
-        path.lo[k] = std::min(from[k], to[k]) - r;
-        path.hi[k] = std::max(from[k], to[k]) + r;
-    }
-    if (inside(path, cover_of_[i] ? covers_[cover_of_[i] - 1] : boxes_.box[i])) return;
+    SweptBox path = box_around(path_start_[i], at(i, h), r);
+    if (contains(cover_of_[i] ? covers_[cover_of_[i] - 1] : boxes_.box[i], path)) return;
     // Looked up with a skin: a ball of a pile struck again and again in a step bends its path
     // each time, a little, and each bend left the box covered so far by a hair (the pour of
     // 10,000 balls looked up 3.2 times per struck ball and step). With a fiftieth of a radius
